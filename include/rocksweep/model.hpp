@@ -1,0 +1,46 @@
+#pragma once
+/// Everything the kernel needs about one cell, reduced to the numbers it uses.
+#include "rocksweep/anchorage.hpp"
+#include "rocksweep/block.hpp"
+#include "rocksweep/excitation.hpp"
+
+namespace rocksweep {
+
+enum class Equations { nonlinear, linearised };
+std::string to_string(Equations e);
+
+/// Per-cell constants in kernel units: rotations in rad, time in s, accelerations / g.
+/// The anchorage moment / I0 is kappa sin(|theta|/2) (Eq. 8), kappa = 8 b^2 K / I0 [1/s^2].
+struct CellModel {
+    double p2 = 0.0;          ///< p^2 [1/s^2]
+    double alpha = 0.0;       ///< [rad]
+    double e = 1.0;           ///< impact velocity ratio
+    Equations equations = Equations::nonlinear;
+    AnchorageKind anchorage = AnchorageKind::free;
+    double kappa_max = 0.0;   ///< constant: kappa of K; adaptive: of K_max
+    double kappa_min = 0.0;   ///< adaptive: of K_min; otherwise = kappa_max
+    double break_max = 0.0;   ///< fracture angle while K = K_max [rad]
+    double break_min = 0.0;   ///< fracture angle while K = K_min [rad]
+    double force_max = 0.0;   ///< F / F_u = force_max tan(|theta|/2) while K = K_max
+    double force_min = 0.0;   ///< same while K = K_min
+    double k_max_n_m = 0.0;   ///< K_max [N/m], for histories
+    double k_min_n_m = 0.0;   ///< K_min [N/m]
+    double v_threshold = 0.0; ///< approach speed below which an impact is settling [rad/s]
+    double mass_kg = 0.0, radius_m = 0.0, gravity = 9.81;  ///< for the work of Eq. 23
+    double half_width_m = 0.0;                            ///< b, for the work of Eq. 24
+    double inertia = 0.0;                                  ///< I0 [kg m^2]
+    Pulse pulse;
+
+    double p() const;
+    /// Uplift from rest (Eq. 1): |ax| > (1 + ay) tan(alpha).
+    bool uplifts(double t) const;
+    /// Fastest time scale of the cell [rad/s]: pulse, rocking, spring.
+    double omega_max() const;
+};
+
+/// `impact_threshold` is the settling threshold as a fraction of p alpha (physics.md §5).
+CellModel make_cell_model(const Block& block, const Anchorage& anchorage, const Pulse& pulse,
+                          Equations equations = Equations::nonlinear,
+                          double impact_threshold = 1e-3);
+
+}  // namespace rocksweep

@@ -1,0 +1,32 @@
+#pragma once
+/// What one run of one cell tells (physics.md §5).
+#include <cstdint>
+#include <string>
+
+namespace rocksweep {
+
+enum class Outcome : std::uint8_t {
+    safe = 0,
+    overturned_impact = 1,     ///< mode 1: at least one impact before overturning
+    overturned_no_impact = 2,  ///< mode 2: overturned without impact
+    not_converged = 255,       ///< hit the step cap; a runaway cell, not a result
+};
+std::string to_string(Outcome o);
+
+/// Bits of CellResult::broken.
+inline constexpr std::uint8_t broken_left = 1;   ///< spring working for theta > 0
+inline constexpr std::uint8_t broken_right = 2;  ///< spring working for theta < 0
+
+/// Trivially copyable: the scheduler moves these as bytes.
+struct CellResult {
+    double max_rotation = 0.0;      ///< max |theta| / alpha
+    double t_overturn_s = 0.0;      ///< time |theta| reached pi/2; NaN if it did not
+    double peak_force_ratio = 0.0;  ///< max anchorage force / F_u; NaN without anchorage
+    std::int32_t impacts = 0;       ///< impacts with approach speed above the threshold
+    std::int32_t impacts_total = 0; ///< every impact integrated, settling ones included
+    std::int64_t steps = 0;         ///< RK4 steps taken (trial steps of event searches included)
+    Outcome outcome = Outcome::safe;
+    std::uint8_t broken = 0;        ///< broken_left | broken_right
+};
+
+}  // namespace rocksweep

@@ -1,0 +1,70 @@
+#pragma once
+/// The work list of a sweep: scenarios x amplitude x frequency, one cell per index.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "rocksweep/anchorage.hpp"
+#include "rocksweep/block.hpp"
+#include "rocksweep/model.hpp"
+#include "rocksweep/outcome.hpp"
+
+namespace rocksweep {
+
+/// Points evenly spaced on [lo, hi], both ends included (lo alone when points == 1).
+struct Axis {
+    double lo = 1.0, hi = 1.0;
+    std::size_t points = 1;
+    double at(std::size_t i) const;
+    std::vector<double> values() const;
+};
+
+/// One anchorage configuration of the sweep.
+struct Scenario {
+    std::string name;          ///< HDF5 group name under /spectra
+    Anchorage anchorage;
+    double theta_f_ratio = 0;  ///< theta_f / alpha of the (K_max) spring; 0 for free
+    double kmin_ratio = 1;     ///< K_min / K_max; 1 unless adaptive
+};
+
+/// Everything that defines the cells of a sweep (sine pulses).
+struct SweepSpec {
+    Block block{};
+    Equations equations = Equations::nonlinear;
+    double impact_threshold = 1e-3;  ///< fraction of p alpha
+    double phase = 0.0;              ///< psi [rad]
+    double vertical_g = 0.0;         ///< a_v0 / g
+    double vertical_phase = 0.0;     ///< psi_v [rad]
+    Axis omega_ratio;                ///< omega_p / p
+    Axis amplitude_ratio;            ///< a_p0 / (alpha g)
+    std::vector<Scenario> scenarios;
+
+    std::size_t cells_per_scenario() const { return omega_ratio.points * amplitude_ratio.points; }
+    std::size_t cell_count() const { return cells_per_scenario() * scenarios.size(); }
+    /// index = scenario * (n_amp n_omega) + i_amp * n_omega + i_omega (C order per scenario).
+    CellModel cell(std::size_t index) const;
+};
+
+/// Result columns of a sweep, indexed like SweepSpec::cell.
+struct SweepResults {
+    std::vector<std::uint8_t> outcome;
+    std::vector<double> max_rotation;
+    std::vector<std::int32_t> impacts;
+    std::vector<double> t_overturn;
+    std::vector<double> peak_force_ratio;
+    std::vector<std::uint8_t> broken;
+    std::vector<std::uint8_t> done;  ///< 1 once the cell's result is in
+
+    void resize(std::size_t n);
+    std::size_t size() const { return outcome.size(); }
+    void store(std::size_t index, const CellResult& r);
+    std::size_t done_count() const;
+};
+
+/// Computes cells [first, first + count) of `spec` into `out`.
+struct IntegratorSettings;
+void compute_cells(const SweepSpec& spec, const IntegratorSettings& settings, std::size_t first,
+                   std::size_t count, CellResult* out, int lanes = 8);
+
+}  // namespace rocksweep

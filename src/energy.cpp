@@ -1,0 +1,119 @@
+#include "rocksweep/energy.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rocksweep {
+
+namespace {
+
+bool linear(const CellModel& m) { return m.equations == Equations::linearised; }
+
+/// dV/dphi of gravity plus a spring of coefficient kappa.
+double potential_slope(const CellModel& m, double kappa, double phi) {
+    if (linear(m)) return m.p2 * (m.alpha - phi) + 0.5 * kappa * phi;
+    return m.p2 * std::sin(m.alpha - phi) + kappa * std::sin(0.5 * phi);
+}
+
+double potential(const CellModel& m, double kappa, double phi) {
+    return gravity_potential(m, phi) + spring_potential(m, kappa, phi);
+}
+
+}  // namespace
+
+double gravity_potential(const CellModel& m, double phi) {
+    if (linear(m)) return m.p2 * (m.alpha * phi - 0.5 * phi * phi);
+    return m.p2 * (std::cos(m.alpha - phi) - std::cos(m.alpha));
+}
+
+double spring_potential(const CellModel& m, double kappa, double phi) {
+    if (kappa == 0.0) return 0.0;
+    if (linear(m)) return 0.25 * kappa * phi * phi;
+    // Integral of the Eq. 8 moment, kappa sin(phi/2): the potential the integrated equation of
+    // motion conserves (the strain energy in tan^2(phi/2) agrees with it to O(phi^4)).
+    const double s = std::sin(0.25 * phi);
+    return 4.0 * kappa * s * s;  // = 2 kappa (1 - cos(phi/2)), without cancellation
+}
+
+Swing outward_swing(const CellModel& m, double ke, double kappa_out, double kappa_in,
+                    double break_angle) {
+    Swing sw;
+    const double cap = std::min(break_angle, M_PI / 2);
+    // The first maximum of V on [0, cap]: V rises on [0, alpha]; past alpha a spring can keep
+    // it rising. A block that turns before that maximum never meets what lies beyond it.
+    double lim = cap;
+    if (m.alpha < cap && potential_slope(m, kappa_out, cap) < 0.0) {
+        double lo = m.alpha, hi = cap;
+        constexpr int scan = 32;  // V' may dip and rise: take its first zero
+        for (int i = 1; i <= scan; ++i) {
+            const double x = m.alpha + (cap - m.alpha) * i / scan;
+            if (potential_slope(m, kappa_out, x) < 0.0) { hi = x; break; }
+            lo = x;
+        }
+        for (int i = 0; i < 100 && hi - lo > 1e-15; ++i) {
+            const double mid = 0.5 * (lo + hi);
+            (potential_slope(m, kappa_out, mid) > 0.0 ? lo : hi) = mid;
+        }
+        lim = lo;
+    }
+    if (!(ke < potential(m, kappa_out, lim))) return sw;
+    double lo = 0.0, hi = lim;
+    for (int i = 0; i < 200 && hi - lo > 1e-16; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (potential(m, kappa_out, mid) < ke ? lo : hi) = mid;
+    }
+    sw.bounded = true;
+    sw.peak = 0.5 * (lo + hi);
+    // Coming back with kappa_in: the spring releases only what K_min stores at the peak.
+    sw.ke_return = ke + spring_potential(m, kappa_in, sw.peak) - spring_potential(m, kappa_out, sw.peak);
+    return sw;
+}
+
+FreeFate free_fate(const CellModel& m, int side, double v, bool left_intact, bool right_intact) {
+    FreeFate f;
+    const bool anchored = m.anchorage != AnchorageKind::free;
+    auto spring = [&](int s, double& k_out, double& k_in, double& brk, double& fcoef) {
+        const bool intact = anchored && (s > 0 ? left_intact : right_intact);
+        k_out = intact ? m.kappa_max : 0.0;
+        k_in = intact ? m.kappa_min : 0.0;
+        brk = intact ? m.break_max : INFINITY;
+        fcoef = intact ? m.force_max : 0.0;
+    };
+    double ke = 0.5 * v * v;
+    int s = side;
+    for (int swing = 0; swing < 1'000'000; ++swing) {
+        double k_out, k_in, brk, fcoef;
+        spring(s, k_out, k_in, brk, fcoef);
+        const Swing sw = outward_swing(m, ke, k_out, k_in, brk);
+        if (!sw.bounded) return f;
+        f.max_phi = std::max(f.max_phi, sw.peak);
+        f.peak_force = std::max(f.peak_force, fcoef * std::tan(0.5 * sw.peak));
+        const double v_ret = std::sqrt(2.0 * sw.ke_return);
+        ++f.impacts_total;
+        if (v_ret < m.v_threshold) {
+            f.decided = true;
+            return f;
+        }
+        ++f.impacts;
+        ke = m.e * m.e * sw.ke_return;
+        s = -s;
+        // Once both sides have swung and neither stiffness changes within a swing, the motion
+        // is conservative between impacts: every later swing is smaller than the last on its
+        // side, and the approach speeds fall as v_ret e^k.
+        double ko2, ki2, b2, f2;
+        spring(s, ko2, ki2, b2, f2);
+        if (swing >= 1 && k_out == k_in && ko2 == ki2) {
+            const double ratio = v_ret / m.v_threshold;
+            auto n = static_cast<std::int32_t>(std::floor(std::log(ratio) / -std::log(m.e)));
+            while (n > 0 && v_ret * std::pow(m.e, n) < m.v_threshold) --n;
+            while (v_ret * std::pow(m.e, n + 1) >= m.v_threshold) ++n;
+            f.impacts += n;
+            f.impacts_total += n + 1;
+            f.decided = true;
+            return f;
+        }
+    }
+    return f;
+}
+
+}  // namespace rocksweep

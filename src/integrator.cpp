@@ -1,0 +1,547 @@
+#include "rocksweep/integrator.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cassert>
+#include <cfloat>
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+
+#include "rocksweep/energy.hpp"
+
+namespace rocksweep {
+
+std::string to_string(Method m) { return m == Method::events ? "events" : "paper"; }
+
+std::string to_string(Outcome o) {
+    switch (o) {
+        case Outcome::safe: return "safe";
+        case Outcome::overturned_impact: return "overturned_with_impact";
+        case Outcome::overturned_no_impact: return "overturned_without_impact";
+        case Outcome::not_converged: return "not_converged";
+    }
+    return "?";
+}
+
+namespace {
+
+constexpr double kHalfPi = M_PI / 2;
+
+/// Per-lane coefficients of the right-hand side, constant over one step.
+struct RhsLane {
+    double p2, alpha, kappa, ax_g, ay_g, omega, phase, phase_y;
+    double t_cut;  ///< ground moves at stage times t < t_cut
+    int side;
+    bool sine, linear;
+};
+
+/// theta'' on side s (physics.md §3, Eq. 7 and 9 with the restoring factor s):
+/// -p^2 [(1 + ay) sin(s alpha - theta) + ax cos(s alpha - theta)] - s kappa sin(s theta / 2).
+/// Written on s theta rather than |theta| so that a trial step just past theta = 0 stays smooth.
+inline double rhs(const RhsLane& c, double t, double theta) {
+    double ax = 0.0, ay = 0.0;
+    if (t < c.t_cut) {
+        if (c.sine) {
+            ax = c.ax_g * std::sin(c.omega * t + c.phase);
+            ay = c.ay_g == 0.0 ? 0.0 : c.ay_g * std::sin(c.omega * t + c.phase_y);
+        } else {
+            ax = c.ax_g;
+        }
+    }
+    const double s = c.side;
+    const double a = s * c.alpha - theta;
+    const double sn = c.linear ? a : std::sin(a);
+    const double cs = c.linear ? 1.0 : std::cos(a);
+    const double spring = c.kappa == 0.0 ? 0.0 : (c.linear ? 0.5 * s * theta : std::sin(0.5 * s * theta));
+    return -c.p2 * ((1.0 + ay) * sn + ax * cs) - s * c.kappa * spring;
+}
+
+/// One classical RK4 step per lane; y = (theta, theta_dot). The same scalar code serves every
+/// lane count, so a cell gives the same bits wherever it sits in a batch.
+template <int W>
+struct Batch {
+    std::array<RhsLane, W> c{};
+    std::array<double, W> t0{}, y0{}, v0{}, dt{}, y1{}, v1{}, a0{};
+
+    void step() {
+        for (int i = 0; i < W; ++i) {
+            const RhsLane& l = c[i];
+            const double h = dt[i], t = t0[i], y = y0[i], v = v0[i];
+            // k1 = f(t, y)
+            const double k1y = v, k1v = rhs(l, t, y);
+            // k2 = f(t + h/2, y + h/2 k1)
+            const double k2y = v + 0.5 * h * k1v, k2v = rhs(l, t + 0.5 * h, y + 0.5 * h * k1y);
+            // k3 = f(t + h/2, y + h/2 k2)
+            const double k3y = v + 0.5 * h * k2v, k3v = rhs(l, t + 0.5 * h, y + 0.5 * h * k2y);
+            // k4 = f(t + h, y + h k3)
+            const double k4y = v + h * k3v, k4v = rhs(l, t + h, y + h * k3y);
+            y1[i] = y + h / 6.0 * (k1y + 2.0 * k2y + 2.0 * k3y + k4y);
+            v1[i] = v + h / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
+            a0[i] = k1v;
+        }
+    }
+};
+
+enum class Event { none, overturn, fracture, impact, turn };
+
+/// The state machine of one cell: what its next trial step is, and what the step's end means.
+class Lane {
+public:
+    Lane(const CellModel& m, const IntegratorSettings& s, const StepObserver* obs)
+        : m_(m), set_(s), obs_(obs) {
+        t_pulse_end_ = m.pulse.end_time();
+        h_ = set_.method == Method::paper ? set_.paper_dt_s
+                                          : 2.0 * M_PI / (m.omega_max() * set_.steps_per_period);
+        r_.t_overturn_s = NAN;
+        r_.peak_force_ratio = m.anchorage == AnchorageKind::free ? NAN : 0.0;
+    }
+
+    bool finished() const { return done_; }
+    CellResult result() const {
+        CellResult r = r_;
+        r.max_rotation = max_phi_ / m_.alpha;
+        r.broken = static_cast<std::uint8_t>((broken_[0] ? broken_left : 0) | (broken_[1] ? broken_right : 0));
+        return r;
+    }
+
+    /// Sets up the next trial step in lane i of the batch; advances a block at rest first.
+    /// Returns false when the cell has finished.
+    template <int W>
+    bool prepare(Batch<W>& b, int i) {
+        while (!done_ && side_ == 0) leave_rest();
+        if (done_) return false;
+        if (r_.steps >= set_.max_steps) {
+            finish(Outcome::not_converged);
+            return false;
+        }
+        RhsLane& c = b.c[i];
+        c.p2 = m_.p2;
+        c.alpha = m_.alpha;
+        c.kappa = kappa();
+        c.ax_g = m_.pulse.ax_g;
+        c.ay_g = m_.pulse.ay_g;
+        c.omega = m_.pulse.omega;
+        c.phase = m_.pulse.phase;
+        c.phase_y = m_.pulse.phase_y;
+        c.sine = m_.pulse.kind == PulseKind::sine;
+        c.linear = m_.equations == Equations::linearised;
+        c.side = side_;
+        b.t0[i] = t_;
+        b.y0[i] = th_;
+        b.v0[i] = thd_;
+        if (set_.method == Method::paper) {
+            c.t_cut = t_pulse_end_;  // the ground stops mid-step, as in a fixed-step code
+            b.dt[i] = h_;
+            clipped_ = false;
+        } else if (searching_) {
+            c.t_cut = in_pulse() ? INFINITY : -INFINITY;
+            b.dt[i] = trial_;
+        } else {
+            c.t_cut = in_pulse() ? INFINITY : -INFINITY;
+            boundary_ = next_boundary();
+            clipped_ = boundary_ - t_ <= h_;
+            b.dt[i] = clipped_ ? boundary_ - t_ : h_;
+        }
+        return true;
+    }
+
+    template <int W>
+    void finish_step(const Batch<W>& b, int i) {
+        ++r_.steps;
+        if (set_.method == Method::paper)
+            paper_step(b.dt[i], b.y1[i], b.v1[i], b.a0[i]);
+        else
+            event_step(b.dt[i], b.y1[i], b.v1[i], b.a0[i]);
+    }
+
+private:
+    const CellModel& m_;
+    const IntegratorSettings& set_;
+    const StepObserver* obs_;
+    double t_ = 0.0, th_ = 0.0, thd_ = 0.0;
+    int side_ = 0;  ///< +1: rocking with theta > 0; -1: theta < 0; 0: at rest
+    bool broken_[2] = {false, false};  ///< [0] left spring (theta > 0), [1] right
+    bool k_max_ = true;                ///< adaptive: K = K_max now
+    bool done_ = false;
+    double t_pulse_end_, h_;
+    double boundary_ = INFINITY;
+    bool clipped_ = false;
+    // event search on the current step: the root lies in (lo, hi]
+    bool searching_ = false;
+    double lo_ = 0.0, hi_ = 0.0, g_lo_ = 0.0, g_hi_ = 0.0, trial_ = 0.0, width_ = 0.0;
+    int last_moved_ = 0, iterations_ = 0;
+    double hi_y_ = 0.0, hi_v_ = 0.0;
+    double max_phi_ = 0.0;
+    double w_exc_ = 0.0, w_anch_ = 0.0;
+    CellResult r_{};
+
+    bool in_pulse() const { return t_ < t_pulse_end_; }
+    bool anchored() const { return m_.anchorage != AnchorageKind::free; }
+    bool intact(int side) const { return anchored() && !broken_[side > 0 ? 0 : 1]; }
+    double kappa() const {
+        if (side_ == 0 || !intact(side_)) return 0.0;
+        return k_max_ ? m_.kappa_max : m_.kappa_min;
+    }
+    double break_angle() const { return k_max_ ? m_.break_max : m_.break_min; }
+    double force_coef() const { return k_max_ ? m_.force_max : m_.force_min; }
+    double ax_at(double t) const { return t < t_pulse_end_ ? m_.pulse.ax(t) : 0.0; }
+
+    double next_boundary() const {
+        double b = set_.t_end_s;
+        if (in_pulse()) {
+            b = std::min(b, t_pulse_end_);
+            if (m_.anchorage == AnchorageKind::adaptive) b = std::min(b, m_.pulse.next_ax_zero(t_));
+        }
+        return b;
+    }
+
+    void finish(Outcome o) {
+        r_.outcome = o;
+        done_ = true;
+    }
+
+    /// The adaptive law in continuous time (physics.md §4). On the switching surface itself
+    /// the previous K stays.
+    void update_stiffness() {
+        if (m_.anchorage != AnchorageKind::adaptive || side_ == 0) return;
+        if (in_pulse()) {
+            // Sign of ax over the coming interval, taken at its middle: robust at the zeros.
+            const double tz = std::min({m_.pulse.next_ax_zero(t_), t_pulse_end_, t_ + h_});
+            const double ax = m_.pulse.ax(0.5 * (t_ + tz));
+            if (side_ * ax < 0.0) k_max_ = true;
+            else if (side_ * ax > 0.0) k_max_ = false;
+        } else {
+            if (side_ * thd_ > 0.0) k_max_ = true;
+            else if (side_ * thd_ < 0.0) k_max_ = false;
+        }
+    }
+
+    void note_extremes(double phi) {
+        max_phi_ = std::max(max_phi_, phi);
+        if (intact(side_)) r_.peak_force_ratio = std::max(r_.peak_force_ratio, force_coef() * std::tan(0.5 * phi));
+    }
+
+    /// From rest: wait for the ground to lift a corner (Eq. 1), or finish safe.
+    void leave_rest() {
+        const double tu = in_pulse() ? next_uplift(t_, std::min(t_pulse_end_, set_.t_end_s)) : INFINITY;
+        if (!std::isfinite(tu)) {
+            const double t_stop = std::min(std::max(t_, t_pulse_end_), set_.t_end_s);
+            observe_rest(t_stop);
+            t_ = t_stop;
+            finish(Outcome::safe);
+            return;
+        }
+        observe_rest(tu);
+        t_ = tu;
+        th_ = thd_ = 0.0;
+        side_ = m_.pulse.ax(tu) > 0.0 ? -1 : 1;  // positive ground acceleration tips to theta < 0
+        k_max_ = true;  // at uplift ax theta < 0: the adaptive law's K_max
+    }
+
+    /// First time in [t, t_stop) at which the block uplifts, or +inf.
+    double next_uplift(double t, double t_stop) const {
+        if (m_.uplifts(t)) return t;
+        if (m_.pulse.kind != PulseKind::sine) return INFINITY;  // constant ground: no change
+        const double period = 2.0 * M_PI / m_.pulse.omega;
+        const double dt = period / 512.0;
+        double prev = t;
+        while (prev < t_stop) {
+            double next = std::min(prev + dt, t_stop);
+            // A peak of |ax| in (prev, next] catches a pulse barely above the threshold.
+            const double w = m_.pulse.omega, ph = m_.pulse.phase;
+            const double k = std::ceil(((w * prev + ph) - M_PI / 2) / M_PI);
+            const double tpk = ((M_PI / 2 + k * M_PI) - ph) / w;
+            if (tpk > prev && tpk < next && m_.uplifts(tpk)) next = tpk;
+            if (next < t_stop && m_.uplifts(next)) {
+                double lo = prev, hi = next;
+                for (int i = 0; i < 200 && hi - lo > 4 * DBL_EPSILON * hi; ++i) {
+                    const double mid = 0.5 * (lo + hi);
+                    (m_.uplifts(mid) ? hi : lo) = mid;
+                }
+                return hi;
+            }
+            prev = next;
+        }
+        return INFINITY;
+    }
+
+    // ---- event functions: positive before the event, <= 0 once it has happened ----
+    bool turn_armed() const {
+        return m_.anchorage == AnchorageKind::adaptive && !in_pulse() && intact(side_) && side_ * thd_ > 0.0;
+    }
+    double g_event(Event e, double d, double y, double v) const {
+        const double s = side_;
+        switch (e) {
+            case Event::overturn: return kHalfPi - s * y;
+            case Event::fracture: return break_angle() - s * y;
+            case Event::impact:
+                // theta starts at 0 after an impact or uplift: divide out the trivial root.
+                if (th_ != 0.0) return s * y;
+                return s * thd_ > 0.0 ? s * y / d : s * y / (d * d);
+            case Event::turn: return s * v;
+            case Event::none: break;
+        }
+        return 1.0;
+    }
+    Event first_event(double d, double y, double v, double& g) const {
+        Event which = Event::none;
+        g = INFINITY;
+        auto consider = [&](Event e) {
+            const double ge = g_event(e, d, y, v);
+            if (ge < g) { g = ge; which = e; }
+        };
+        consider(Event::overturn);
+        if (intact(side_)) consider(Event::fracture);
+        consider(Event::impact);
+        if (turn_armed()) consider(Event::turn);
+        return which;
+    }
+
+    void event_step(double dt, double y1, double v1, double a0) {
+        double g;
+        first_event(dt, y1, v1, g);
+        if (!searching_) {
+            if (g > 0.0) {
+                accept(dt, y1, v1, a0, Event::none);
+                return;
+            }
+            // The earliest event lies in (0, dt]: find it by Illinois (regula falsi that halves
+            // the value of an end kept twice), each trial a fresh RK4 step from the same start,
+            // so that the state at the event carries the RK4 local error only.
+            searching_ = true;
+            last_moved_ = 0;
+            iterations_ = 0;
+            lo_ = 0.0;
+            g_lo_ = NAN;  // no value at 0: the event functions may vanish there
+            hi_ = dt;
+            g_hi_ = g;
+            hi_y_ = y1;
+            hi_v_ = v1;
+            width_ = dt;
+            trial_ = 0.5 * dt;
+            return;
+        }
+        ++iterations_;
+        if (g > 0.0) {
+            if (last_moved_ == 1) g_hi_ *= 0.5;
+            lo_ = dt;
+            g_lo_ = g;
+            last_moved_ = 1;
+        } else {
+            if (last_moved_ == -1) g_lo_ *= 0.5;
+            hi_ = dt;
+            g_hi_ = g;
+            hi_y_ = y1;
+            hi_v_ = v1;
+            last_moved_ = -1;
+        }
+        const double tol = std::max(4.0 * DBL_EPSILON * (std::abs(t_) + hi_), 1e-12 * hi_);
+        if (hi_ - lo_ <= tol || iterations_ >= 100) {
+            searching_ = false;
+            double gh;
+            const Event which = first_event(hi_, hi_y_, hi_v_, gh);
+            accept(hi_, hi_y_, hi_v_, a0, which);
+            return;
+        }
+        double x = 0.5 * (lo_ + hi_);
+        // Guard: bisect when there is no value at lo yet, or the bracket stopped shrinking.
+        if (!std::isnan(g_lo_) && (iterations_ % 4 != 0 || hi_ - lo_ < 0.5 * width_)) {
+            const double xs = lo_ + (hi_ - lo_) * g_lo_ / (g_lo_ - g_hi_);
+            if (xs > lo_ && xs < hi_) x = xs;
+        }
+        if (iterations_ % 4 == 0) width_ = hi_ - lo_;
+        trial_ = x;
+    }
+
+    /// Takes the state at t + dt as the new state and applies what happened there.
+    void accept(double dt, double y1, double v1, double a0, Event e) {
+        const double t0 = t_, y0 = th_, v0 = thd_;
+        const double t1 = (e == Event::none && clipped_) ? boundary_ : t_ + dt;
+        // A turning point inside the step: its height from the cubic Hermite interpolant,
+        // at the zero of the linear interpolant of theta_dot (error O(dt^4) in the peak).
+        if (side_ * v0 > 0.0 && side_ * v1 < 0.0) {
+            const double tau = v0 / (v0 - v1);
+            const double h00 = (1 + 2 * tau) * (1 - tau) * (1 - tau), h10 = tau * (1 - tau) * (1 - tau);
+            const double h01 = tau * tau * (3 - 2 * tau), h11 = tau * tau * (tau - 1);
+            note_extremes(side_ * (h00 * y0 + h10 * dt * v0 + h01 * y1 + h11 * dt * v1));
+        }
+        note_extremes(std::min(side_ * y1, kHalfPi));
+        if (obs_) observe(t0, y0, v0, a0, t1, y1, v1);
+        t_ = t1;
+        th_ = y1;
+        thd_ = v1;
+        switch (e) {
+            case Event::overturn: return overturn();
+            case Event::fracture:
+                broken_[side_ > 0 ? 0 : 1] = true;
+                return;
+            case Event::impact: return impact();
+            case Event::turn:
+                k_max_ = false;
+                return;
+            case Event::none: break;
+        }
+        if (t_ >= set_.t_end_s) return finish(Outcome::safe);
+        update_stiffness();  // at a zero of ax or the end of the pulse
+    }
+
+    void overturn() {
+        r_.t_overturn_s = t_;
+        max_phi_ = kHalfPi;
+        finish(r_.impacts_total > 0 ? Outcome::overturned_impact : Outcome::overturned_no_impact);
+    }
+
+    void impact() {
+        const double approach = std::abs(thd_);
+        ++r_.impacts_total;
+        th_ = 0.0;
+        if (approach < m_.v_threshold) {
+            // The block is settling: the remaining impacts pile up in a time of order
+            // 2 v / (p^2 alpha (1 - e)). Take it as at rest (physics.md §5).
+            thd_ = 0.0;
+            side_ = 0;
+            return;
+        }
+        ++r_.impacts;
+        thd_ *= m_.e;
+        side_ = -side_;
+        update_stiffness();
+        if (!in_pulse() && set_.energy_stop) {
+            const FreeFate f = free_fate(m_, side_, std::abs(thd_), !broken_[0], !broken_[1]);
+            if (f.decided) {
+                max_phi_ = std::max(max_phi_, f.max_phi);
+                if (anchored()) r_.peak_force_ratio = std::max(r_.peak_force_ratio, f.peak_force);
+                r_.impacts += f.impacts;
+                r_.impacts_total += f.impacts_total;
+                finish(Outcome::safe);
+            }
+        }
+    }
+
+    /// The paper's scheme (Section 3.2): fixed dt, checks at the end of the step only, the
+    /// adaptive law one step behind.
+    void paper_step(double dt, double y1, double v1, double a0) {
+        const double t0 = t_, y0 = th_, v0 = thd_;
+        const double t1 = t_ + dt;
+        note_extremes(std::min(side_ * y1, kHalfPi));
+        if (obs_) observe(t0, y0, v0, a0, t1, y1, v1);
+        t_ = t1;
+        th_ = y1;
+        thd_ = v1;
+        if (side_ * y1 >= kHalfPi) return overturn();
+        if (intact(side_) && side_ * y1 >= break_angle()) broken_[side_ > 0 ? 0 : 1] = true;
+        if (side_ * y1 < 0.0) {
+            impact();
+            if (done_ || side_ == 0) return;
+        }
+        if (m_.anchorage == AnchorageKind::adaptive) {
+            if (in_pulse()) {
+                const double ax = m_.pulse.ax(t_);
+                if (side_ * ax < 0.0) k_max_ = true;
+                else if (side_ * ax > 0.0) k_max_ = false;
+            } else if (th_ != 0.0) {
+                const double grow = std::abs(th_) - std::abs(y0);
+                if (grow > 0.0) k_max_ = true;
+                else if (grow < 0.0) k_max_ = false;
+            }
+        }
+        if (t_ >= set_.t_end_s) finish(Outcome::safe);
+    }
+
+    /// A block at rest until time t, for histories.
+    void observe_rest(double t1) {
+        if (obs_ && t1 > t_) observe(t_, 0.0, 0.0, 0.0, t1, 0.0, 0.0);
+    }
+
+    void observe(double t0, double y0, double v0, double a0, double t1, double y1, double v1) {
+        StepRecord s{};
+        s.t0 = t0; s.theta0 = y0; s.theta_dot0 = v0; s.acc0 = a0;
+        s.t1 = t1; s.theta1 = y1; s.theta_dot1 = v1;
+        const double ax1 = t1 < t_pulse_end_ || (t1 == t_pulse_end_ && t0 < t1) ? m_.pulse.ax(t1) : 0.0;
+        const double ay1 = t1 <= t_pulse_end_ ? m_.pulse.ay(t1) : 0.0;
+        s.acc1 = side_ == 0 ? 0.0 : rocking_acceleration(m_, side_, kappa(), ax1, ay1, y1);
+        const double k = side_ == 0 || !intact(side_) ? 0.0 : (k_max_ ? m_.k_max_n_m : m_.k_min_n_m);
+        s.k_left = side_ > 0 ? k : 0.0;
+        s.k_right = side_ < 0 ? k : 0.0;
+        // Eq. 23-24 integrated by the trapezoidal rule over the step; work done on the block.
+        auto p_exc = [&](double t, double y, double v, bool end) {
+            const double ax = (end ? t <= t_pulse_end_ : t < t_pulse_end_) ? m_.pulse.ax(t) : 0.0;
+            return -m_.mass_kg * ax * m_.gravity * m_.radius_m * std::cos(m_.alpha - std::abs(y)) * v;
+        };
+        auto p_anc = [&](double y, double v) {
+            const double b = m_.half_width_m;
+            return -8.0 * b * b * k * std::sin(0.5 * std::abs(y)) * (y > 0 ? 1.0 : (y < 0 ? -1.0 : 0.0)) * v;
+        };
+        const double h = t1 - t0;
+        w_exc_ += 0.5 * h * (p_exc(t0, y0, v0, false) + p_exc(t1, y1, v1, true));
+        w_anch_ += 0.5 * h * (p_anc(y0, v0) + p_anc(y1, v1));
+        s.work_excitation = w_exc_;
+        s.work_anchorage = w_anch_;
+        s.impacts = r_.impacts;
+        (*obs_)(s);
+    }
+};
+
+template <int W>
+void run_lanes(std::span<const CellModel> cells, std::span<CellResult> results,
+               const IntegratorSettings& settings, const StepObserver* obs) {
+    Batch<W> b;
+    std::array<std::optional<Lane>, W> lane;
+    std::array<std::size_t, W> index{};
+    std::size_t next = 0;
+    int live = 0;
+    auto refill = [&](int i) {
+        // A finished lane takes the next cell at once, so that lanes stay busy.
+        while (next < cells.size()) {
+            lane[i].emplace(cells[next], settings, obs);
+            index[i] = next++;
+            if (lane[i]->prepare(b, i)) return true;
+            results[index[i]] = lane[i]->result();
+        }
+        lane[i].reset();
+        return false;
+    };
+    for (int i = 0; i < W; ++i) live += refill(i) ? 1 : 0;
+    while (live > 0) {
+        for (int i = 0; i < W; ++i)
+            if (!lane[i]) b.dt[i] = 0.0;  // idle lane: a harmless zero step
+        b.step();
+        for (int i = 0; i < W; ++i) {
+            if (!lane[i]) continue;
+            lane[i]->finish_step(b, i);
+            if (lane[i]->prepare(b, i)) continue;
+            results[index[i]] = lane[i]->result();
+            if (!refill(i)) --live;
+        }
+    }
+}
+
+}  // namespace
+
+double rocking_acceleration(const CellModel& m, int side, double kappa, double ax, double ay, double theta) {
+    RhsLane c{m.p2, m.alpha, kappa, ax, ay, 0.0, 0.0, 0.0, INFINITY, side, false,
+              m.equations == Equations::linearised};
+    return rhs(c, 0.0, theta);
+}
+
+void integrate_cells(std::span<const CellModel> cells, std::span<CellResult> results,
+                     const IntegratorSettings& settings, int lanes) {
+    if (results.size() != cells.size()) throw std::invalid_argument("integrate_cells: size mismatch");
+    switch (lanes) {
+        case 1: return run_lanes<1>(cells, results, settings, nullptr);
+        case 4: return run_lanes<4>(cells, results, settings, nullptr);
+        case 8: return run_lanes<8>(cells, results, settings, nullptr);
+        case 16: return run_lanes<16>(cells, results, settings, nullptr);
+        default: throw std::invalid_argument("integrate_cells: lanes must be 1, 4, 8 or 16");
+    }
+}
+
+CellResult integrate_cell(const CellModel& cell, const IntegratorSettings& settings, const StepObserver& observer) {
+    CellResult r;
+    run_lanes<1>(std::span<const CellModel>(&cell, 1), std::span<CellResult>(&r, 1), settings,
+                 observer ? &observer : nullptr);
+    return r;
+}
+
+}  // namespace rocksweep
