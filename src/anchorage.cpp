@@ -32,6 +32,13 @@ double Anchorage::break_angle(double k) const {
     return 2.0 * std::atan(std::tan(theta_f_rad / 2.0) * k_max / k);
 }
 
+bool adaptive_uses_kmax(bool excitation_acting, double ax, double theta, double theta_dot, bool previous) {
+    const double x = excitation_acting ? -ax * theta : theta * theta_dot;
+    if (x > 0.0) return true;
+    if (x < 0.0) return false;
+    return previous;
+}
+
 Anchorage free_anchorage() { return Anchorage{}; }
 
 static void check_strength(double strength_n) {

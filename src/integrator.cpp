@@ -132,8 +132,9 @@ public:
         b.v0[i] = thd_;
         if (set_.method == Method::paper) {
             c.t_cut = t_pulse_end_;  // the ground stops mid-step, as in a fixed-step code
-            b.dt[i] = h_;
-            clipped_ = false;
+            // Only the end of a record cuts a step short.
+            clipped_ = set_.t_end_s - t_ <= h_;
+            b.dt[i] = clipped_ ? set_.t_end_s - t_ : h_;
         } else if (searching_) {
             c.t_cut = in_pulse() ? INFINITY : -INFINITY;
             b.dt[i] = trial_;
@@ -205,15 +206,13 @@ private:
     /// the previous K stays.
     void update_stiffness() {
         if (m_.anchorage != AnchorageKind::adaptive || side_ == 0) return;
+        // The side stands for theta's sign: theta is 0 just after an impact.
         if (in_pulse()) {
             // Sign of ax over the coming interval, taken at its middle: robust at the zeros.
             const double tz = std::min({m_.pulse.next_ax_zero(t_), t_pulse_end_, t_ + h_});
-            const double ax = m_.pulse.ax(0.5 * (t_ + tz));
-            if (side_ * ax < 0.0) k_max_ = true;
-            else if (side_ * ax > 0.0) k_max_ = false;
+            k_max_ = adaptive_uses_kmax(true, m_.pulse.ax(0.5 * (t_ + tz)), side_, 0.0, k_max_);
         } else {
-            if (side_ * thd_ > 0.0) k_max_ = true;
-            else if (side_ * thd_ < 0.0) k_max_ = false;
+            k_max_ = adaptive_uses_kmax(false, 0.0, side_, thd_, k_max_);
         }
     }
 
@@ -423,7 +422,7 @@ private:
     /// adaptive law one step behind.
     void paper_step(double dt, double y1, double v1, double a0) {
         const double t0 = t_, y0 = th_, v0 = thd_;
-        const double t1 = t_ + dt;
+        const double t1 = clipped_ ? set_.t_end_s : t_ + dt;
         note_extremes(std::min(side_ * y1, kHalfPi));
         if (obs_) observe(t0, y0, v0, a0, t1, y1, v1);
         t_ = t1;
@@ -436,15 +435,10 @@ private:
             if (done_ || side_ == 0) return;
         }
         if (m_.anchorage == AnchorageKind::adaptive) {
-            if (in_pulse()) {
-                const double ax = m_.pulse.ax(t_);
-                if (side_ * ax < 0.0) k_max_ = true;
-                else if (side_ * ax > 0.0) k_max_ = false;
-            } else if (th_ != 0.0) {
-                const double grow = std::abs(th_) - std::abs(y0);
-                if (grow > 0.0) k_max_ = true;
-                else if (grow < 0.0) k_max_ = false;
-            }
+            // One step behind, as the paper's K(t+1) from the state at t; Eq. 22 on |theta|'s
+            // change over the step.
+            if (in_pulse()) k_max_ = adaptive_uses_kmax(true, m_.pulse.ax(t_), side_, 0.0, k_max_);
+            else if (th_ != 0.0) k_max_ = adaptive_uses_kmax(false, 0.0, 1.0, std::abs(th_) - std::abs(y0), k_max_);
         }
         if (t_ >= set_.t_end_s) finish(Outcome::safe);
     }

@@ -10,7 +10,10 @@ std::string to_string(Equations e) { return e == Equations::nonlinear ? "nonline
 double CellModel::p() const { return std::sqrt(p2); }
 
 bool CellModel::uplifts(double t) const {
-    return std::abs(pulse.ax(t)) > (1.0 + pulse.ay(t)) * std::tan(alpha);
+    // Under the linearised equations theta'' at rest is p^2 (alpha (1 + ay) - |ax|): the
+    // threshold that keeps uplift consistent with the motion is alpha, not tan(alpha).
+    const double slope = equations == Equations::linearised ? alpha : std::tan(alpha);
+    return std::abs(pulse.ax(t)) > (1.0 + pulse.ay(t)) * slope;
 }
 
 double CellModel::omega_max() const {

@@ -32,6 +32,12 @@ double stiffness_from_strength(const Block& b, double strength_n, double theta_f
 /// Fracture angle of a spring of stiffness K and strength F_u: 2 atan(F_u / (4 b K)).
 double fracture_angle(const Block& b, double strength_n, double k);
 
+/// The adaptive law in continuous time: true for K_max. While the excitation acts (Eq. 21)
+/// K_max where ax theta < 0 and K_min where ax theta > 0; in free oscillation (Eq. 22) K_max
+/// while |theta| grows (theta theta_dot > 0), K_min while it shrinks. On the switching
+/// surface itself (a product of 0) the previous value stays. Only signs matter.
+bool adaptive_uses_kmax(bool excitation_acting, double ax, double theta, double theta_dot, bool previous);
+
 Anchorage free_anchorage();
 /// Constant stiffness from F_u and theta_f. Throws InputError for theta_f <= 0 or F_u <= 0.
 Anchorage constant_anchorage(const Block& b, double strength_n, double theta_f_rad);

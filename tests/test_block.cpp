@@ -1,0 +1,57 @@
+// Block geometry and impact law (physics.md §1).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "rocksweep/block.hpp"
+#include "rocksweep/errors.hpp"
+
+using namespace rocksweep;
+
+TEST(Block, SanMatteoMatchesThePaper) {
+    const Block b = rectangular_block(0.30, 1.36, 3361.0);
+    EXPECT_NEAR(b.p(), 2.29846, 5e-6);             // paper: 2.2985 rad/s
+    EXPECT_NEAR(b.alpha_rad, 0.217111, 5e-7);      // paper: 0.2171 rad
+    EXPECT_NEAR(b.e, 0.930398, 5e-7);              // 1 - 3/2 sin^2(alpha)
+    EXPECT_NEAR(b.radius_m, std::hypot(0.30, 1.36), 1e-15);
+    EXPECT_NEAR(b.inertia(), 4.0 / 3.0 * 3361.0 * b.radius_m * b.radius_m, 1e-9);
+}
+
+TEST(Block, EquivalentBlockFromFrequencyParameterRoundTrips) {
+    const double ratio = inertia_ratio_from_p(2.0, 1.5, 9.81);
+    const Block b = equivalent_block(1.5, 0.2, ratio, 1000.0);
+    EXPECT_NEAR(b.p(), 2.0, 1e-14);
+    EXPECT_NEAR(b.e, 1.0 - 2.0 * std::pow(std::sin(0.2), 2) / ratio, 1e-15);
+}
+
+TEST(Block, UserRestitutionBelowHousnerIsKept) {
+    const Block b = rectangular_block(0.30, 1.36, 3361.0, 9.81, 0.8);
+    EXPECT_EQ(b.e, 0.8);
+}
+
+TEST(Block, RestitutionAboveHousnerIsRejected) {
+    EXPECT_THROW(rectangular_block(0.30, 1.36, 3361.0, 9.81, 0.95), InputError);
+}
+
+TEST(Block, BlocksThatCannotRockAreRejected) {
+    // sin^2(alpha) >= 2/3 for a rectangle: Housner's e <= 0.
+    EXPECT_THROW(rectangular_block(1.5, 1.0, 100.0), InputError);
+    // Just below the limit it rocks, with e barely above 0.
+    const double alpha = std::asin(std::sqrt(2.0 / 3.0)) - 1e-6;
+    const Block b = rectangular_block(std::tan(alpha), 1.0, 100.0);
+    EXPECT_GT(b.e, 0.0);
+    EXPECT_LT(b.e, 1e-5);
+}
+
+TEST(Block, NonPositiveSizesAndNaNAreRejectedWithTheFieldName) {
+    try {
+        rectangular_block(-0.3, 1.36, 3361.0);
+        FAIL() << "no throw";
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.field(), "half-width");
+        EXPECT_NE(std::string(e.what()).find("-0.3"), std::string::npos);
+    }
+    EXPECT_THROW(rectangular_block(0.3, NAN, 3361.0), InputError);
+    EXPECT_THROW(rectangular_block(0.3, 1.36, 0.0), InputError);
+    EXPECT_THROW(rectangular_block(0.3, 1.36, 3361.0, -9.81), InputError);
+}

@@ -1,0 +1,94 @@
+// Energy of free rocking: potentials consistent with the equation of motion, and the energy
+// decision agreeing with simulation (physics.md §5).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "rocksweep/anchorage.hpp"
+#include "rocksweep/energy.hpp"
+#include "rocksweep/integrator.hpp"
+
+using namespace rocksweep;
+
+namespace {
+const Block kBlock = rectangular_block(0.30, 1.36, 3361.0);
+const double kStrength = 0.4 * 3361.0 * 9.81;
+}  // namespace
+
+TEST(Energy, PotentialsAreTheIntegralsOfTheRestoringTerms) {
+    const CellModel m = make_cell_model(kBlock, constant_anchorage(kBlock, kStrength, kBlock.alpha_rad), Pulse{});
+    for (Equations eq : {Equations::nonlinear, Equations::linearised}) {
+        CellModel c = m;
+        c.equations = eq;
+        for (double phi : {0.01, 0.1, 0.2, 0.5, 1.2}) {
+            const double h = 1e-6;
+            auto v = [&](double x) { return gravity_potential(c, x) + spring_potential(c, c.kappa_max, x); };
+            const double slope = (v(phi + h) - v(phi - h)) / (2 * h);
+            // theta'' on side +1 at theta = phi, no ground motion, is -dV/dphi.
+            EXPECT_NEAR(-slope, rocking_acceleration(c, 1, c.kappa_max, 0, 0, phi), 1e-6 * c.p2);
+        }
+    }
+}
+
+TEST(Energy, SwingPeakMatchesSimulatedFreeRocking) {
+    // After the pulse, the first swing after an impact peaks where the energy says.
+    for (int kind : {0, 1}) {
+        const Anchorage a = kind ? constant_anchorage(kBlock, kStrength, kBlock.alpha_rad) : free_anchorage();
+        Pulse p;
+        p.omega = (kind ? 4.0 : 6.0) * kBlock.p();
+        p.ax_g = (kind ? 2.7 : 4.0) * kBlock.alpha_rad;
+        const CellModel m = make_cell_model(kBlock, a, p);
+        IntegratorSettings s;
+        s.energy_stop = false;
+        s.steps_per_period = 512;
+        s.t_end_s = 20.0;
+        double v_out = NAN, peak = 0.0;
+        int side = 0;
+        bool done = false;
+        integrate_cell(m, s, [&](const StepRecord& r) {
+            if (done || r.t0 < p.end_time()) return;
+            if (r.theta0 == 0.0 && std::isnan(v_out)) {
+                v_out = std::abs(r.theta_dot0);
+                side = r.theta_dot0 > 0 ? 1 : -1;
+            }
+            if (!std::isnan(v_out)) {
+                if (side * r.theta1 < 0.0) done = true;
+                else peak = std::max(peak, side * r.theta1);
+            }
+        });
+        ASSERT_FALSE(std::isnan(v_out));
+        const Swing sw = outward_swing(m, 0.5 * v_out * v_out, m.kappa_max, m.kappa_min, m.break_max);
+        ASSERT_TRUE(sw.bounded);
+        EXPECT_NEAR(sw.peak, peak, 1e-4 * peak);  // step-end samples: peak seen within O(dt^2)
+        EXPECT_GE(sw.peak, peak);
+        EXPECT_NEAR(sw.ke_return, 0.5 * v_out * v_out, 1e-15);  // conservative swing
+    }
+}
+
+TEST(Energy, BarrierSeparatesReturnFromOverturning) {
+    const CellModel m = make_cell_model(kBlock, free_anchorage(), Pulse{});
+    const double barrier = gravity_potential(m, m.alpha);
+    EXPECT_TRUE(outward_swing(m, barrier * (1 - 1e-9), 0, 0, INFINITY).bounded);
+    EXPECT_FALSE(outward_swing(m, barrier * (1 + 1e-9), 0, 0, INFINITY).bounded);
+    // Eq. 19 for the free block: theta_dot^2 = 2 p^2 (1 - cos(alpha)) from theta = 0.
+    EXPECT_NEAR(2 * barrier, 2 * m.p2 * (1 - std::cos(m.alpha)), 1e-15);
+}
+
+TEST(Energy, AdaptiveSwingReturnsWithLessEnergy) {
+    const CellModel m = make_cell_model(kBlock, adaptive_anchorage(kBlock, kStrength, kBlock.alpha_rad, 0.1), Pulse{});
+    const Swing sw = outward_swing(m, 0.3 * gravity_potential(m, m.alpha), m.kappa_max, m.kappa_min, m.break_max);
+    ASSERT_TRUE(sw.bounded);
+    EXPECT_LT(sw.ke_return, 0.3 * gravity_potential(m, m.alpha));
+    EXPECT_NEAR(sw.ke_return, gravity_potential(m, sw.peak) + spring_potential(m, m.kappa_min, sw.peak), 1e-12);
+}
+
+TEST(Energy, FreeFateCountsTheGeometricTailOfImpacts) {
+    const CellModel m = make_cell_model(kBlock, free_anchorage(), Pulse{});
+    const double v = 100 * m.v_threshold;
+    const FreeFate f = free_fate(m, 1, v, true, true);
+    ASSERT_TRUE(f.decided);
+    // approach speeds v, e v, e^2 v, ... above the threshold: floor(ln(100) / ln(1/e)) + 1
+    const int expected = static_cast<int>(std::floor(std::log(100.0) / -std::log(m.e))) + 1;
+    EXPECT_EQ(f.impacts, expected);
+    EXPECT_EQ(f.impacts_total, expected + 1);
+}
