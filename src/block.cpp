@@ -32,9 +32,9 @@ Block equivalent_block(double radius_m, double alpha_rad, double inertia_ratio, 
                          "a block that can rock: Housner's e = 1 - 2 sin^2(alpha) m R^2 / I0 = " +
                              format_number(eh) + " must be > 0 (the block is too squat)");
     if (e) {
-        require_closed("restitution-e", *e, 0.0, eh,
+        require_closed("restitution", *e, 0.0, eh,
                        "0 < e <= Housner's value " + format_number(eh));
-        if (!(*e > 0.0)) throw InputError("restitution-e", format_number(*e), "0 < e <= " + format_number(eh));
+        if (!(*e > 0.0)) throw InputError("restitution", format_number(*e), "0 < e <= " + format_number(eh));
         b.e = *e;
     } else {
         b.e = eh;
@@ -45,7 +45,12 @@ Block equivalent_block(double radius_m, double alpha_rad, double inertia_ratio, 
 Block rectangular_block(double b_m, double h_m, double mass_kg, double gravity, std::optional<double> e) {
     require_open("half-width", b_m, 0.0, INFINITY, "a length > 0 m");
     require_open("half-height", h_m, 0.0, INFINITY, "a length > 0 m");
-    return equivalent_block(std::hypot(b_m, h_m), std::atan2(b_m, h_m), 4.0 / 3.0, mass_kg, gravity, e);
+    const double alpha = std::atan2(b_m, h_m);
+    if (!(housner_e(alpha, 4.0 / 3.0) > 0.0))
+        throw InputError("half-width", format_number(b_m) + " (with half-height " + format_number(h_m) + ")",
+                         "a block that can rock: b/h < sqrt(2) (Housner's e = 1 - 3/2 sin^2(alpha) = " +
+                             format_number(housner_e(alpha, 4.0 / 3.0)) + " must be > 0)");
+    return equivalent_block(std::hypot(b_m, h_m), alpha, 4.0 / 3.0, mass_kg, gravity, e);
 }
 
 double inertia_ratio_from_p(double p, double radius_m, double gravity) {

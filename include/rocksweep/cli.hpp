@@ -1,0 +1,28 @@
+#pragma once
+/// The command line: `rocksweep sweep | simulate | info`, options from flags and TOML files.
+#include <string>
+
+#include "rocksweep/mpi_session.hpp"
+#include "rocksweep/options.hpp"
+
+namespace rocksweep {
+
+/// Exit statuses: 0 done, 2 bad input (nothing written), 1 failure while running,
+/// 130 / 143 stopped by SIGINT / SIGTERM (the output file says which cells are done).
+int run_cli(int argc, char** argv, const MpiSession& mpi);
+
+struct SweepCommand {
+    std::string output;
+    bool resume = false, overwrite = false, quiet = false;
+    std::size_t max_chunk = 256;
+    double checkpoint_s = 5.0;
+};
+
+/// Runs a sweep on every rank of `mpi`; rank 0 writes `cmd.output`. Returns the exit status.
+int run_sweep(const Options& opts, const SweepCommand& cmd, const std::string& config_text,
+              const MpiSession& mpi);
+
+/// Throws InputError unless `path` can be created: its directory exists and is writable.
+void require_writable(const std::string& field, const std::string& path);
+
+}  // namespace rocksweep

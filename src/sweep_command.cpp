@@ -1,0 +1,191 @@
+// `rocksweep sweep`: build the work list, schedule it over the ranks, and keep rank 0's file
+// up to date so that nothing computed is lost to a kill.
+#include <csignal>
+#include <cstring>
+#include <ctime>
+#include <filesystem>
+#include <iostream>
+
+#include "rocksweep/cli.hpp"
+#include "rocksweep/errors.hpp"
+#include "rocksweep/progress.hpp"
+#include "rocksweep/scheduler.hpp"
+#include "rocksweep/spectra_file.hpp"
+
+#ifndef ROCKSWEEP_VERSION
+#define ROCKSWEEP_VERSION "unknown"
+#endif
+
+namespace rocksweep {
+
+namespace {
+
+volatile std::sig_atomic_t g_signal = 0;
+extern "C" void note_signal(int sig) { g_signal = sig; }
+
+/// SIGINT/SIGTERM only raise a flag while a sweep runs: rank 0 then stops handing out work,
+/// gathers what is in flight and saves it.
+class SignalGuard {
+public:
+    SignalGuard() {
+        g_signal = 0;
+        struct sigaction sa{};
+        sa.sa_handler = note_signal;
+        sigemptyset(&sa.sa_mask);
+        sigaction(SIGINT, &sa, &old_int_);
+        sigaction(SIGTERM, &sa, &old_term_);
+    }
+    ~SignalGuard() {
+        sigaction(SIGINT, &old_int_, nullptr);
+        sigaction(SIGTERM, &old_term_, nullptr);
+    }
+    SignalGuard(const SignalGuard&) = delete;
+    SignalGuard& operator=(const SignalGuard&) = delete;
+
+private:
+    struct sigaction old_int_{}, old_term_{};
+};
+
+std::string utc_now() {
+    char buf[32];
+    const std::time_t t = std::time(nullptr);
+    std::tm tm{};
+    gmtime_r(&t, &tm);
+    std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
+    return buf;
+}
+
+std::vector<IndexRange> missing_ranges(const SweepResults& r) {
+    std::vector<IndexRange> todo;
+    for (std::size_t i = 0; i < r.size();) {
+        if (r.done[i]) { ++i; continue; }
+        std::size_t j = i;
+        while (j < r.size() && !r.done[j]) ++j;
+        todo.push_back({i, j - i});
+        i = j;
+    }
+    return todo;
+}
+
+/// Rank 0's view of the output before any work: where the results start from.
+struct Start {
+    SweepResults results;
+    std::vector<IndexRange> todo;
+};
+
+Start prepare_output(const SweepSpec& spec, const SweepCommand& cmd, std::ostream& log) {
+    namespace fs = std::filesystem;
+    require_writable("output", cmd.output);
+    if (cmd.resume && cmd.overwrite) throw InputError("resume", "with --overwrite", "one of --resume, --overwrite");
+    Start s;
+    s.results.resize(spec.cell_count());
+    const bool exists = fs::exists(cmd.output);
+    if (exists && cmd.resume) {
+        s.results = read_spectra_results(cmd.output, spec);
+        log << "resuming " << cmd.output << ": " << s.results.done_count() << " of " << spec.cell_count()
+            << " cells already done\n";
+    } else if (exists && !cmd.overwrite) {
+        throw InputError("output", cmd.output, "a new file; it exists: pass --resume to continue it or --overwrite to replace it");
+    }
+    s.todo = missing_ranges(s.results);
+    return s;
+}
+
+}  // namespace
+
+int run_sweep(const Options& opts, const SweepCommand& cmd, const std::string& config_text, const MpiSession& mpi) {
+    const SweepSpec spec = make_sweep_spec(opts);  // the same on every rank, so is any error
+    const IntegratorSettings settings = make_settings(opts.numerics);
+    RootStream log(mpi);
+
+    // The output is checked on rank 0 only; the verdict reaches every rank before any work.
+    Start start;
+    int verdict = 0;
+    std::string why;
+    if (mpi.is_root()) {
+        try {
+            start = prepare_output(spec, cmd, log);
+        } catch (const InputError& e) {
+            verdict = 2;
+            why = e.what();
+        }
+    }
+    if (mpi.size() > 1) MPI_Bcast(&verdict, 1, MPI_INT, 0, mpi.comm());
+    if (verdict != 0) {
+        log << "rocksweep: error: --" << why << "\n";
+        return verdict;
+    }
+
+    Provenance prov;
+    prov.version = ROCKSWEEP_VERSION;
+    prov.config_text = config_text;
+    prov.method = to_string(settings.method);
+    prov.steps_per_period = settings.steps_per_period;
+    prov.paper_dt_s = settings.paper_dt_s;
+    prov.created_utc = utc_now();
+    prov.ranks = mpi.size();
+
+    SweepResults& results = start.results;
+    const std::size_t total = spec.cell_count();
+    std::size_t todo_cells = 0;
+    for (const IndexRange& r : start.todo) todo_cells += r.count;
+    Progress progress(todo_cells, cmd.quiet || !mpi.is_root());
+    std::size_t done_now = 0;
+    const double t0 = MPI_Wtime();
+    double last_save = t0;
+    auto save = [&] {
+        prov.wall_s = MPI_Wtime() - t0;
+        write_spectra(cmd.output, spec, results, prov);
+        last_save = MPI_Wtime();
+    };
+
+    ScheduleOptions so;
+    so.record_bytes = sizeof(CellResult);
+    so.max_chunk = cmd.max_chunk;
+    so.min_chunk = std::min<std::size_t>(8, cmd.max_chunk);
+    so.stop_requested = [] { return g_signal != 0; };
+    so.on_tick = [&] {
+        progress.update(done_now);
+        if (MPI_Wtime() - last_save >= cmd.checkpoint_s) save();
+    };
+    const int lanes = opts.numerics.lanes;
+    const ComputeFn compute = [&](std::size_t first, std::size_t count, std::byte* out) {
+        std::vector<CellResult> buf(count);
+        compute_cells(spec, settings, first, count, buf.data(), lanes);
+        std::memcpy(out, buf.data(), count * sizeof(CellResult));
+    };
+    const SinkFn sink = [&](std::size_t first, std::size_t count, const std::byte* records) {
+        for (std::size_t i = 0; i < count; ++i) {
+            CellResult r;
+            std::memcpy(&r, records + i * sizeof(CellResult), sizeof r);
+            results.store(first + i, r);
+        }
+        done_now += count;
+    };
+
+    if (mpi.is_root()) {
+        log << "sweep: " << spec.scenarios.size() << " scenarios x " << spec.amplitude_ratio.points << " amplitudes x "
+            << spec.omega_ratio.points << " frequencies = " << total << " cells on " << mpi.size() << " rank(s) -> "
+            << cmd.output << "\n";
+    }
+    ScheduleStats stats;
+    {
+        SignalGuard guard;
+        stats = make_mpi_scheduler(mpi.comm())->run(start.todo, so, compute, sink);
+    }
+    if (!mpi.is_root()) return stats.stopped ? 128 + (g_signal ? g_signal : SIGINT) : 0;
+    progress.update(done_now);
+    progress.finish();
+    save();
+    const std::size_t done = results.done_count();
+    if (done < total) {
+        const int sig = g_signal ? g_signal : SIGINT;
+        log << "stopped by signal " << sig << ": " << done << " of " << total << " cells saved in " << cmd.output
+            << "; rerun with --resume to continue\n";
+        return 128 + sig;
+    }
+    if (!cmd.quiet) log << "wrote " << cmd.output << "\n";
+    return 0;
+}
+
+}  // namespace rocksweep
