@@ -44,7 +44,7 @@ CLI::Validator number_in(double lo, double hi, bool open_lo = false, bool open_h
         allowed, "NUMBER IN " + allowed);
 }
 
-CLI::Validator positive() { return number_in(0.0, 1e300, true); }
+CLI::Validator positive() { return number_in(0.0, INFINITY, true, true); }
 
 void add_model_options(CLI::App& app, Options& o) {
     BlockOptions& b = o.block;

@@ -241,6 +241,7 @@ private:
     /// First time in [t, t_stop) at which the block uplifts, or +inf.
     double next_uplift(double t, double t_stop) const {
         if (m_.uplifts(t)) return t;
+        if (m_.never_uplifts()) return INFINITY;  // decided without integrating
         if (m_.pulse.kind != PulseKind::sine) return INFINITY;  // constant ground: no change
         const double period = 2.0 * M_PI / m_.pulse.omega;
         const double dt = period / 512.0;

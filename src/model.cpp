@@ -9,11 +9,20 @@ std::string to_string(Equations e) { return e == Equations::nonlinear ? "nonline
 
 double CellModel::p() const { return std::sqrt(p2); }
 
+namespace {
+/// Under the linearised equations theta'' at rest is p^2 (alpha (1 + ay) - |ax|): the
+/// threshold that keeps uplift consistent with the motion is alpha, not tan(alpha).
+double uplift_slope(const CellModel& m) {
+    return m.equations == Equations::linearised ? m.alpha : std::tan(m.alpha);
+}
+}  // namespace
+
 bool CellModel::uplifts(double t) const {
-    // Under the linearised equations theta'' at rest is p^2 (alpha (1 + ay) - |ax|): the
-    // threshold that keeps uplift consistent with the motion is alpha, not tan(alpha).
-    const double slope = equations == Equations::linearised ? alpha : std::tan(alpha);
-    return std::abs(pulse.ax(t)) > (1.0 + pulse.ay(t)) * slope;
+    return std::abs(pulse.ax(t)) > (1.0 + pulse.ay(t)) * uplift_slope(*this);
+}
+
+bool CellModel::never_uplifts() const {
+    return std::abs(pulse.ax_g) <= (1.0 - std::abs(pulse.ay_g)) * uplift_slope(*this);
 }
 
 double CellModel::omega_max() const {

@@ -34,6 +34,8 @@ struct CellModel {
     double p() const;
     /// Uplift from rest (Eq. 1): |ax| > (1 + ay) tan(alpha).
     bool uplifts(double t) const;
+    /// True if no time of the pulse can satisfy Eq. 1: |ax| <= (1 - |ay|) threshold throughout.
+    bool never_uplifts() const;
     /// Fastest time scale of the cell [rad/s]: pulse, rocking, spring.
     double omega_max() const;
 };

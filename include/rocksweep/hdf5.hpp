@@ -1,0 +1,269 @@
+#pragma once
+/// A small RAII layer over the HDF5 C API: one move-only owner per handle kind, every call
+/// checked, failures thrown as Hdf5Error carrying HDF5's own error text.
+///
+/// Only rocksweep_io includes this header; the physics never sees HDF5.
+#include <hdf5.h>
+
+#include <concepts>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <vector>
+
+namespace rocksweep {
+
+/// A failed HDF5 call. what() = "<what we were doing>: <HDF5's error stack, innermost last>".
+class Hdf5Error : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+namespace h5 {
+
+/// Turns off HDF5's automatic printing of error stacks (we report them in Hdf5Error instead).
+/// Idempotent; File::create / File::open call it, so callers rarely need to.
+void silence_errors() noexcept;
+
+/// Throws Hdf5Error("<context>: <HDF5 error stack>") if `status` is negative; returns it otherwise.
+/// Clears HDF5's error stack either way.
+std::int64_t check(std::int64_t status, std::string_view context);
+
+/// Owns one hid_t and releases it with the close function it was given. Move-only.
+/// The destructor never throws (a failed close there is ignored); close() reports it.
+class Handle {
+public:
+    using CloseFn = herr_t (*)(hid_t);
+
+    Handle() noexcept = default;
+    Handle(hid_t id, CloseFn close) noexcept : id_(id), close_(close) {}
+    Handle(Handle&& other) noexcept;
+    Handle& operator=(Handle&& other) noexcept;
+    Handle(const Handle&) = delete;
+    Handle& operator=(const Handle&) = delete;
+    ~Handle();
+
+    hid_t id() const noexcept { return id_; }
+    bool valid() const noexcept { return id_ >= 0; }
+    /// Releases the handle now. Throws Hdf5Error if HDF5 reports a failure (e.g. a file that
+    /// cannot be flushed, or still has open objects); the handle then keeps its id and the
+    /// destructor tries once more.
+    void close();
+
+private:
+    void release() noexcept;
+    hid_t id_ = H5I_INVALID_HID;
+    CloseFn close_ = nullptr;
+};
+
+/// A dataspace (shape). `dims` in C order, slowest-varying first.
+class Dataspace : public Handle {
+public:
+    Dataspace() = default;
+    explicit Dataspace(hid_t id) noexcept : Handle(id, H5Sclose) {}
+    static Dataspace scalar();
+    static Dataspace simple(std::span<const hsize_t> dims);
+    std::vector<hsize_t> dims() const;
+    std::size_t element_count() const;
+};
+
+/// An owned datatype (copies of predefined types, string types).
+class Datatype : public Handle {
+public:
+    Datatype() = default;
+    explicit Datatype(hid_t id) noexcept : Handle(id, H5Tclose) {}
+    /// Fixed-length, null-terminated string type able to hold `text` plus its terminator.
+    /// ASCII character set unless `text` has bytes >= 0x80 (then UTF-8).
+    static Datatype fixed_string_for(std::string_view text);
+};
+
+/// A property list (dataset creation, file access, ...).
+class PropertyList : public Handle {
+public:
+    PropertyList() = default;
+    explicit PropertyList(hid_t id) noexcept : Handle(id, H5Pclose) {}
+    /// A new list of class `cls`, e.g. H5P_DATASET_CREATE.
+    static PropertyList create(hid_t cls);
+};
+
+class Attribute : public Handle {
+public:
+    Attribute() = default;
+    explicit Attribute(hid_t id) noexcept : Handle(id, H5Aclose) {}
+};
+
+/// Anything that carries attributes: a file (its root group), a group or a dataset.
+class Object : public Handle {
+public:
+    using Handle::Handle;
+    /// HDF5 path of the object inside its file (for messages), e.g. "/spectra/free".
+    std::string name() const;
+    /// Name of the file the object lives in (for messages).
+    std::string file_name() const;
+    bool has_attribute(std::string_view attr) const;
+};
+
+class Dataset;
+class Group;
+
+/// A file or a group: something that holds links to groups and datasets.
+class Location : public Object {
+public:
+    using Object::Object;
+    Group create_group(std::string_view name) const;
+    Group open_group(std::string_view name) const;
+    Dataset open_dataset(std::string_view name) const;
+    /// True if every component of the relative path `path` exists (no error when a parent
+    /// is missing, unlike H5Lexists).
+    bool exists(std::string_view path) const;
+    /// Names of the links directly under this location, in name order.
+    std::vector<std::string> children() const;
+};
+
+class Group : public Location {
+public:
+    Group() = default;
+    explicit Group(hid_t id) noexcept : Location(id, H5Gclose) {}
+};
+
+class Dataset : public Object {
+public:
+    Dataset() = default;
+    explicit Dataset(hid_t id) noexcept : Object(id, H5Dclose) {}
+    Dataspace space() const;
+    Datatype type() const;
+    std::vector<hsize_t> dims() const { return space().dims(); }
+};
+
+/// An open HDF5 file. Closing it closes the root group; objects opened from it must be closed
+/// first (the file is opened with H5F_CLOSE_SEMI, so close() throws if any are left open).
+class File : public Location {
+public:
+    File() = default;
+    /// Creates (truncates) `path` for writing, in the HDF5 1.8 file format so that older h5py
+    /// and MATLAB releases read it. Throws Hdf5Error naming the path.
+    static File create(const std::string& path);
+    /// Opens an existing file read-only. Throws Hdf5Error naming the path.
+    static File open_read_only(const std::string& path);
+
+private:
+    explicit File(hid_t id) noexcept : Location(id, H5Fclose) {}
+};
+
+// ---------------------------------------------------------------------------------------
+// Datasets
+
+/// Element types the helpers write and read, with their explicit little-endian file types:
+/// double -> H5T_IEEE_F64LE, int32 -> H5T_STD_I32LE, uint8 -> H5T_STD_U8LE.
+template <class T>
+concept Element =
+    std::same_as<T, double> || std::same_as<T, std::int32_t> || std::same_as<T, std::uint8_t>;
+
+/// Datasets at least this large (bytes) are written chunked with shuffle + deflate level 4;
+/// smaller ones contiguous (compression would only add overhead).
+inline constexpr std::size_t compress_min_bytes = 4096;
+
+/// Creates dataset `name` under `where` holding `data` in C order with shape `dims`
+/// (product of dims == data.size(), else std::invalid_argument). Throws Hdf5Error.
+template <Element T>
+Dataset write_dataset(const Location& where, std::string_view name, std::span<const T> data,
+                      std::span<const hsize_t> dims);
+
+/// 1-D dataset of data.size() elements.
+template <Element T>
+Dataset write_1d(const Location& where, std::string_view name, std::span<const T> data) {
+    const hsize_t dims[1] = {data.size()};
+    return write_dataset<T>(where, name, data, dims);
+}
+
+/// 2-D dataset [rows][cols], C order (the row index varies slowest).
+template <Element T>
+Dataset write_2d(const Location& where, std::string_view name, std::span<const T> data,
+                 std::size_t rows, std::size_t cols) {
+    const hsize_t dims[2] = {rows, cols};
+    return write_dataset<T>(where, name, data, dims);
+}
+
+/// A 2-D array read back, C order: values[i * cols + j].
+template <class T>
+struct Array2 {
+    std::size_t rows = 0, cols = 0;
+    std::vector<T> values;
+};
+
+/// Reads a whole 1-D dataset. Throws Hdf5Error if it is missing, not 1-D, or its type is not
+/// of T's kind (float for double; integer of the same size and signedness otherwise).
+template <Element T>
+std::vector<T> read_1d(const Location& where, std::string_view name);
+
+/// Reads a whole 2-D dataset. Same checks as read_1d.
+template <Element T>
+Array2<T> read_2d(const Location& where, std::string_view name);
+
+// ---------------------------------------------------------------------------------------
+// Attributes (scalar unless stated; an existing attribute of the same name is replaced)
+
+void write_attribute(const Object& obj, std::string_view name, double value);
+void write_attribute(const Object& obj, std::string_view name, std::int64_t value);
+/// Any other integer is stored as int64 (H5T_STD_I64LE). Throws std::out_of_range if it does
+/// not fit.
+template <std::integral I>
+    requires(!std::same_as<I, bool> && !std::same_as<I, std::int64_t>)
+void write_attribute(const Object& obj, std::string_view name, I value) {
+    if constexpr (std::is_unsigned_v<I> && sizeof(I) >= sizeof(std::int64_t)) {
+        if (value > static_cast<I>(INT64_MAX))
+            throw std::out_of_range("attribute " + std::string(name) + " does not fit in int64");
+    }
+    write_attribute(obj, name, static_cast<std::int64_t>(value));
+}
+/// Fixed-length, null-terminated string (see Datatype::fixed_string_for). Throws Hdf5Error
+/// if `value` contains a NUL byte.
+void write_attribute(const Object& obj, std::string_view name, std::string_view value);
+inline void write_attribute(const Object& obj, std::string_view name, const char* value) {
+    write_attribute(obj, name, std::string_view(value));
+}
+inline void write_attribute(const Object& obj, std::string_view name, const std::string& value) {
+    write_attribute(obj, name, std::string_view(value));
+}
+/// 1-D array attributes.
+void write_attribute(const Object& obj, std::string_view name, std::span<const double> values);
+void write_attribute(const Object& obj, std::string_view name,
+                     std::span<const std::uint8_t> values);
+
+/// Reads a scalar numeric attribute (any integer or float type) as double. Throws Hdf5Error.
+double read_double_attribute(const Object& obj, std::string_view name);
+/// Reads a scalar integer attribute as int64. Throws Hdf5Error (also for a float attribute).
+std::int64_t read_int64_attribute(const Object& obj, std::string_view name);
+/// Reads a scalar string attribute, fixed- or variable-length; padding and the terminator
+/// are dropped. Throws Hdf5Error.
+std::string read_string_attribute(const Object& obj, std::string_view name);
+
+// ---------------------------------------------------------------------------------------
+// Dimension scales (H5DS, hdf5_hl)
+
+/// Makes the 1-D dataset `scale` a dimension scale called `scale_name`.
+void make_scale(const Dataset& scale, std::string_view scale_name);
+/// Attaches `scale` to dimension `dim` (0 = slowest) of `data`.
+void attach_scale(const Dataset& data, const Dataset& scale, unsigned dim);
+/// True if `scale` is attached to dimension `dim` of `data`.
+bool is_attached(const Dataset& data, const Dataset& scale, unsigned dim);
+/// Labels dimension `dim` of `data` (shown by h5py's ds.dims[i].label and h5dump).
+void set_dimension_label(const Dataset& data, unsigned dim, std::string_view label);
+
+// ---------------------------------------------------------------------------------------
+// Publishing a file (not HDF5-specific; the CSV writer uses it too)
+
+/// Calls write(path + ".tmp") and, once it returns, renames the tmp file onto `path`, so a
+/// reader never sees a half-written `path`. If `write` throws, the tmp file is removed and the
+/// exception propagates (`path` is untouched). If the rename fails, the tmp file is removed
+/// and InputError("output", path, "a writable location ...") is thrown.
+void publish_atomically(const std::string& path,
+                        const std::function<void(const std::string& tmp_path)>& write);
+
+}  // namespace h5
+}  // namespace rocksweep

@@ -1,0 +1,38 @@
+#pragma once
+/// The overturning-spectra HDF5 file: one group per scenario, one [n_amp, n_omega] dataset per
+/// result column, the axes as dimension scales. Layout: docs/hdf5.md.
+#include <string>
+
+#include "rocksweep/sweep.hpp"
+
+namespace rocksweep {
+
+/// What produced a file. Everything here may differ between two runs of the same config, so
+/// it is written only under /provenance (h5diff of the rest is identical across runs).
+struct Provenance {
+    std::string version;      ///< rocksweep version
+    std::string config_text;  ///< the effective config, as a config file
+    std::string method;       ///< to_string(Method)
+    double steps_per_period = 0.0;
+    double paper_dt_s = 0.0;
+    std::string created_utc;  ///< ISO 8601, e.g. 2024-05-01T12:00:00Z
+    int ranks = 1;            ///< MPI ranks
+    double wall_s = 0.0;      ///< wall-clock time of the run [s]
+};
+
+/// Writes the whole file to path + ".tmp", closes it and renames it onto `path`: `path` is
+/// never partial, and holds the previous file if this throws. `r` may be partial (its `done`
+/// column says which cells hold results).
+/// Throws std::invalid_argument if r's columns do not all have spec.cell_count() entries,
+/// InputError for a scenario name that cannot be a group name (empty, ".", containing '/',
+/// or repeated) and for an output location that cannot be written, Hdf5Error otherwise.
+void write_spectra(const std::string& path, const SweepSpec& spec, const SweepResults& r,
+                   const Provenance& prov);
+
+/// Reads back the result columns (and `done`) of a file written by write_spectra for the same
+/// spec, e.g. to resume a partial run. Throws InputError naming the file if it cannot be
+/// opened or if its axes, scenarios (names and anchorage parameters), block, pulse settings
+/// or dataset shapes differ from `spec`; Hdf5Error for an unreadable file.
+SweepResults read_spectra_results(const std::string& path, const SweepSpec& spec);
+
+}  // namespace rocksweep

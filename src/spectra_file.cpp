@@ -1,0 +1,348 @@
+#include "rocksweep/spectra_file.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <set>
+#include <span>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+#include "rocksweep/errors.hpp"
+#include "rocksweep/hdf5.hpp"
+
+namespace rocksweep {
+
+namespace {
+
+// Bumped when the layout changes in a way a reader must know about.
+constexpr std::int64_t format_version = 1;
+constexpr const char* grid_dimensions = "amplitude_ratio, omega_ratio";
+
+// Attributes that define the cells: written by write_spectra and compared by
+// read_spectra_results, so the two can never disagree about what "the same sweep" means.
+struct NamedNumber {
+    const char* name;
+    double value;
+};
+
+std::vector<NamedNumber> root_numbers(const SweepSpec& spec) {
+    const Block& b = spec.block;
+    return {
+        {"half_width_m", b.half_width_m()},
+        {"half_height_m", b.half_height_m()},
+        {"radius_m", b.radius_m},
+        {"alpha_rad", b.alpha_rad},
+        {"p_rad_s", b.p()},
+        {"e", b.e},
+        {"inertia_ratio", b.inertia_ratio},
+        {"mass_kg", b.mass_kg},
+        {"gravity_m_s2", b.gravity},
+        {"impact_threshold", spec.impact_threshold},
+        {"phase_rad", spec.phase},
+        {"vertical_g", spec.vertical_g},
+        {"vertical_phase_rad", spec.vertical_phase},
+    };
+}
+
+std::vector<NamedNumber> scenario_numbers(const Scenario& s) {
+    const Anchorage& a = s.anchorage;
+    return {
+        {"theta_f_ratio", s.theta_f_ratio}, {"kmin_ratio", s.kmin_ratio},
+        {"k_max_N_per_m", a.k_max},         {"k_min_N_per_m", a.k_min},
+        {"strength_N", a.strength_n},       {"theta_f_rad", a.theta_f_rad},
+    };
+}
+
+struct NamedText {
+    const char* name;
+    std::string value;
+};
+
+std::vector<NamedText> scenario_texts(const Scenario& s) {
+    return {{"anchorage", to_string(s.anchorage.kind)},
+            {"break_rule", to_string(s.anchorage.break_rule)}};
+}
+
+bool same_number(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
+
+void check_columns(const SweepSpec& spec, const SweepResults& r) {
+    const std::size_t n = spec.cell_count();
+    const std::pair<const char*, std::size_t> sizes[] = {
+        {"outcome", r.outcome.size()},
+        {"max_rotation", r.max_rotation.size()},
+        {"impacts", r.impacts.size()},
+        {"t_overturn", r.t_overturn.size()},
+        {"peak_force_ratio", r.peak_force_ratio.size()},
+        {"broken", r.broken.size()},
+        {"done", r.done.size()},
+    };
+    for (const auto& [name, size] : sizes)
+        if (size != n)
+            throw std::invalid_argument(std::string("write_spectra: column ") + name + " has " +
+                                        std::to_string(size) + " entries, the sweep has " +
+                                        std::to_string(n) + " cells");
+}
+
+void check_scenario_names(const SweepSpec& spec) {
+    std::set<std::string> seen;
+    for (const Scenario& s : spec.scenarios) {
+        if (s.name.empty() || s.name == "." || s.name.find('/') != std::string::npos)
+            throw InputError("scenario name", "'" + s.name + "'",
+                             "a non-empty name without '/' (it names an HDF5 group)");
+        if (!seen.insert(s.name).second)
+            throw InputError("scenario name", "'" + s.name + "'", "a name used only once");
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// Writing
+
+struct Axes {
+    h5::Dataset omega;      // dimension 1 of every grid
+    h5::Dataset amplitude;  // dimension 0
+};
+
+h5::Dataset write_axis(const h5::Group& group, const char* name, const Axis& axis,
+                       const char* long_name) {
+    const std::vector<double> values = axis.values();
+    h5::Dataset ds = h5::write_1d<double>(group, name, values);
+    h5::write_attribute(ds, "units", "1");
+    h5::write_attribute(ds, "long_name", long_name);
+    h5::make_scale(ds, name);
+    return ds;
+}
+
+template <h5::Element T>
+h5::Dataset write_grid(const h5::Group& group, const char* name, const std::vector<T>& column,
+                       std::size_t scenario, const SweepSpec& spec, const Axes& axes) {
+    const std::size_t n_amp = spec.amplitude_ratio.points, n_omega = spec.omega_ratio.points;
+    const std::span<const T> block(column.data() + scenario * n_amp * n_omega, n_amp * n_omega);
+    h5::Dataset ds = h5::write_2d<T>(group, name, block, n_amp, n_omega);
+    h5::write_attribute(ds, "dimensions", grid_dimensions);
+    h5::attach_scale(ds, axes.amplitude, 0);
+    h5::attach_scale(ds, axes.omega, 1);
+    h5::set_dimension_label(ds, 0, "amplitude_ratio");
+    h5::set_dimension_label(ds, 1, "omega_ratio");
+    return ds;
+}
+
+void write_root(const h5::File& f, const SweepSpec& spec, const SweepResults& r) {
+    h5::write_attribute(f, "title", "rocksweep overturning spectra");
+    h5::write_attribute(f, "format_version", format_version);
+    for (const NamedNumber& n : root_numbers(spec)) h5::write_attribute(f, n.name, n.value);
+    h5::write_attribute(f, "equations", to_string(spec.equations));
+    const auto n_done = static_cast<std::int64_t>(
+        std::count_if(r.done.begin(), r.done.end(), [](std::uint8_t d) { return d != 0; }));
+    const auto n_cells = static_cast<std::int64_t>(spec.cell_count());
+    h5::write_attribute(f, "n_cells", n_cells);
+    h5::write_attribute(f, "n_done", n_done);
+    h5::write_attribute(f, "complete", std::int64_t{n_done == n_cells ? 1 : 0});
+}
+
+Axes write_axes(const h5::File& f, const SweepSpec& spec) {
+    const h5::Group g = f.create_group("axes");
+    Axes axes;
+    axes.omega = write_axis(g, "omega_ratio", spec.omega_ratio, "omega_p / p");
+    axes.amplitude = write_axis(g, "amplitude_ratio", spec.amplitude_ratio, "a_p0 / (alpha g)");
+    return axes;
+}
+
+void write_scenario(const h5::Group& spectra, std::size_t index, const SweepSpec& spec,
+                    const SweepResults& r, const Axes& axes) {
+    const Scenario& s = spec.scenarios[index];
+    const h5::Group g = spectra.create_group(s.name);
+    h5::write_attribute(g, "index", index);  // position in the config: group listings sort by name
+    for (const NamedText& t : scenario_texts(s)) h5::write_attribute(g, t.name, t.value);
+    for (const NamedNumber& n : scenario_numbers(s)) h5::write_attribute(g, n.name, n.value);
+
+    {
+        const h5::Dataset ds = write_grid(g, "outcome", r.outcome, index, spec, axes);
+        const std::uint8_t values[] = {0, 1, 2, 255};
+        h5::write_attribute(ds, "long_name", "outcome of the pulse");
+        h5::write_attribute(ds, "flag_values", std::span<const std::uint8_t>(values));
+        h5::write_attribute(ds, "flag_meanings",
+                            "safe overturned_with_impact overturned_without_impact not_converged");
+    }
+    {
+        const h5::Dataset ds = write_grid(g, "max_rotation", r.max_rotation, index, spec, axes);
+        h5::write_attribute(ds, "units", "1");
+        h5::write_attribute(ds, "long_name", "max |theta| / alpha");
+    }
+    {
+        const h5::Dataset ds = write_grid(g, "impacts", r.impacts, index, spec, axes);
+        h5::write_attribute(ds, "units", "1");
+        h5::write_attribute(ds, "long_name", "impacts with approach speed above the threshold");
+    }
+    {
+        const h5::Dataset ds = write_grid(g, "t_overturn", r.t_overturn, index, spec, axes);
+        h5::write_attribute(ds, "units", "s");
+        h5::write_attribute(ds, "long_name", "time at which |theta| reached pi/2");
+        h5::write_attribute(ds, "comment", "NaN when the block did not overturn");
+    }
+    {
+        const h5::Dataset ds =
+            write_grid(g, "peak_force_ratio", r.peak_force_ratio, index, spec, axes);
+        h5::write_attribute(ds, "units", "1");
+        h5::write_attribute(ds, "long_name", "peak anchorage force / F_u");
+        h5::write_attribute(ds, "comment", "NaN for a free-standing block");
+    }
+    {
+        const h5::Dataset ds = write_grid(g, "broken", r.broken, index, spec, axes);
+        const std::uint8_t masks[] = {broken_left, broken_right};
+        h5::write_attribute(ds, "long_name", "restrainers broken during the run");
+        h5::write_attribute(ds, "flag_masks", std::span<const std::uint8_t>(masks));
+        h5::write_attribute(ds, "flag_meanings", "left_spring_broken right_spring_broken");
+        h5::write_attribute(ds, "comment",
+                            "bit 1: left spring (works for theta > 0); bit 2: right spring "
+                            "(works for theta < 0)");
+    }
+    {
+        const h5::Dataset ds = write_grid(g, "done", r.done, index, spec, axes);
+        const std::uint8_t values[] = {0, 1};
+        h5::write_attribute(ds, "long_name", "cell computed");
+        h5::write_attribute(ds, "flag_values", std::span<const std::uint8_t>(values));
+        h5::write_attribute(ds, "flag_meanings", "pending computed");
+        h5::write_attribute(ds, "comment", "the other datasets are meaningful only where done = 1");
+    }
+}
+
+void write_provenance(const h5::File& f, const Provenance& prov) {
+    const h5::Group g = f.create_group("provenance");
+    h5::write_attribute(g, "version", prov.version);
+    h5::write_attribute(g, "config", prov.config_text);
+    h5::write_attribute(g, "method", prov.method);
+    h5::write_attribute(g, "steps_per_period", prov.steps_per_period);
+    h5::write_attribute(g, "paper_dt_s", prov.paper_dt_s);
+    h5::write_attribute(g, "created_utc", prov.created_utc);
+    h5::write_attribute(g, "ranks", prov.ranks);
+    h5::write_attribute(g, "wall_s", prov.wall_s);
+}
+
+// All objects opened here are closed on return, so the caller can close the file.
+void write_contents(const h5::File& f, const SweepSpec& spec, const SweepResults& r,
+                    const Provenance& prov) {
+    write_root(f, spec, r);
+    const Axes axes = write_axes(f, spec);
+    const h5::Group spectra = f.create_group("spectra");
+    for (std::size_t i = 0; i < spec.scenarios.size(); ++i) write_scenario(spectra, i, spec, r, axes);
+    write_provenance(f, prov);
+}
+
+// ---------------------------------------------------------------------------------------
+// Reading
+
+[[noreturn]] void mismatch(const std::string& path, const std::string& what) {
+    throw InputError("spectra file", path, "a file written for the same sweep (" + what + ")");
+}
+
+void compare_axis(const std::string& path, const h5::File& f, const char* name, const Axis& axis) {
+    const std::vector<double> in_file = h5::read_1d<double>(f, std::string("axes/") + name);
+    const std::vector<double> expected = axis.values();
+    if (in_file.size() != expected.size())
+        mismatch(path, std::string(name) + " has " + std::to_string(in_file.size()) +
+                           " points in the file, " + std::to_string(expected.size()) + " in the config");
+    for (std::size_t i = 0; i < expected.size(); ++i)
+        if (!same_number(in_file[i], expected[i]))
+            mismatch(path, std::string(name) + "[" + std::to_string(i) + "] is " +
+                               format_number(in_file[i]) + " in the file, " +
+                               format_number(expected[i]) + " in the config");
+}
+
+void compare_number(const std::string& path, const h5::Object& obj, const NamedNumber& n) {
+    const double in_file = h5::read_double_attribute(obj, n.name);
+    if (!same_number(in_file, n.value))
+        mismatch(path, obj.name() + " attribute " + n.name + " is " + format_number(in_file) +
+                           " in the file, " + format_number(n.value) + " in the config");
+}
+
+void compare_text(const std::string& path, const h5::Object& obj, const char* name,
+                  const std::string& expected) {
+    const std::string in_file = h5::read_string_attribute(obj, name);
+    if (in_file != expected)
+        mismatch(path, obj.name() + " attribute " + name + " is '" + in_file + "' in the file, '" +
+                           expected + "' in the config");
+}
+
+template <h5::Element T>
+void read_grid(const std::string& path, const h5::Group& g, const char* name,
+               std::vector<T>& column, std::size_t scenario, const SweepSpec& spec) {
+    const std::size_t n_amp = spec.amplitude_ratio.points, n_omega = spec.omega_ratio.points;
+    const h5::Array2<T> a = h5::read_2d<T>(g, name);
+    if (a.rows != n_amp || a.cols != n_omega)
+        mismatch(path, g.name() + "/" + name + " is " + std::to_string(a.rows) + " x " +
+                           std::to_string(a.cols) + ", the config needs " + std::to_string(n_amp) +
+                           " x " + std::to_string(n_omega));
+    std::copy(a.values.begin(), a.values.end(),
+              column.begin() + static_cast<std::ptrdiff_t>(scenario * n_amp * n_omega));
+}
+
+SweepResults read_contents(const std::string& path, const h5::File& f, const SweepSpec& spec) {
+    compare_axis(path, f, "omega_ratio", spec.omega_ratio);
+    compare_axis(path, f, "amplitude_ratio", spec.amplitude_ratio);
+    for (const NamedNumber& n : root_numbers(spec)) compare_number(path, f, n);
+    compare_text(path, f, "equations", to_string(spec.equations));
+
+    const h5::Group spectra = f.open_group("spectra");
+    std::vector<std::string> in_file = spectra.children();
+    std::vector<std::string> expected;
+    for (const Scenario& s : spec.scenarios) expected.push_back(s.name);
+    std::sort(expected.begin(), expected.end());
+    if (in_file != expected) {
+        auto join = [](const std::vector<std::string>& v) {
+            std::string s;
+            for (const auto& x : v) s += (s.empty() ? "" : ", ") + x;
+            return s.empty() ? std::string("none") : s;
+        };
+        mismatch(path, "scenarios in the file: " + join(in_file) + "; in the config: " + join(expected));
+    }
+
+    SweepResults r;
+    r.resize(spec.cell_count());
+    for (std::size_t i = 0; i < spec.scenarios.size(); ++i) {
+        const Scenario& s = spec.scenarios[i];
+        const h5::Group g = spectra.open_group(s.name);
+        for (const NamedText& t : scenario_texts(s)) compare_text(path, g, t.name, t.value);
+        for (const NamedNumber& n : scenario_numbers(s)) compare_number(path, g, n);
+        read_grid(path, g, "outcome", r.outcome, i, spec);
+        read_grid(path, g, "max_rotation", r.max_rotation, i, spec);
+        read_grid(path, g, "impacts", r.impacts, i, spec);
+        read_grid(path, g, "t_overturn", r.t_overturn, i, spec);
+        read_grid(path, g, "peak_force_ratio", r.peak_force_ratio, i, spec);
+        read_grid(path, g, "broken", r.broken, i, spec);
+        read_grid(path, g, "done", r.done, i, spec);
+    }
+    return r;
+}
+
+}  // namespace
+
+void write_spectra(const std::string& path, const SweepSpec& spec, const SweepResults& r,
+                   const Provenance& prov) {
+    check_columns(spec, r);
+    check_scenario_names(spec);
+    h5::publish_atomically(path, [&](const std::string& tmp) {
+        h5::File f;
+        try {
+            f = h5::File::create(tmp);
+        } catch (const Hdf5Error& e) {
+            throw InputError("output", path, std::string("a writable location (") + e.what() + ")");
+        }
+        write_contents(f, spec, r, prov);
+        f.close();  // flush errors surface here, before the rename
+    });
+}
+
+SweepResults read_spectra_results(const std::string& path, const SweepSpec& spec) {
+    try {
+        const h5::File f = h5::File::open_read_only(path);
+        return read_contents(path, f, spec);
+    } catch (const Hdf5Error& e) {
+        // A missing attribute or dataset means this is not a file we wrote for this layout.
+        throw InputError("spectra file", path,
+                         std::string("a rocksweep spectra file (") + e.what() + ")");
+    }
+}
+
+}  // namespace rocksweep

@@ -1,0 +1,568 @@
+// Round trips of the spectra and history files, and the promises of the HDF5 layer:
+// exact values back, scales attached, nothing partial left behind on failure.
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+#include "rocksweep/anchorage.hpp"
+#include "rocksweep/block.hpp"
+#include "rocksweep/errors.hpp"
+#include "rocksweep/hdf5.hpp"
+#include "rocksweep/history_file.hpp"
+#include "rocksweep/spectra_file.hpp"
+
+namespace fs = std::filesystem;
+using namespace rocksweep;
+
+namespace {
+
+/// A fresh directory per test, removed afterwards.
+class TempDir {
+public:
+    TempDir() {
+        std::string tmpl = (fs::temp_directory_path() / "rocksweep_h5_XXXXXX").string();
+        if (!mkdtemp(tmpl.data())) throw std::runtime_error("mkdtemp failed");
+        path_ = tmpl;
+    }
+    ~TempDir() {
+        std::error_code ec;
+        fs::permissions(path_, fs::perms::owner_all, fs::perm_options::add, ec);
+        fs::remove_all(path_, ec);
+    }
+    std::string file(const std::string& name) const { return (path_ / name).string(); }
+    const fs::path& path() const { return path_; }
+
+private:
+    fs::path path_;
+};
+
+SweepSpec small_spec() {
+    SweepSpec spec;
+    spec.block = rectangular_block(0.3, 1.36, 3361);
+    spec.omega_ratio = Axis{1.0, 4.0, 4};
+    spec.amplitude_ratio = Axis{1.0, 3.0, 3};
+    spec.phase = 0.25;
+    spec.scenarios.push_back(Scenario{"free", free_anchorage(), 0.0, 1.0});
+    spec.scenarios.push_back(Scenario{
+        "constant_alpha", constant_anchorage(spec.block, 0.4 * 3361 * 9.81, spec.block.alpha_rad),
+        1.0, 1.0});
+    return spec;
+}
+
+/// Values that make an index mix-up visible: every cell differs in every column, NaNs where
+/// the real writer puts them, and a few cells not done.
+SweepResults known_results(const SweepSpec& spec, bool all_done = false) {
+    SweepResults r;
+    r.resize(spec.cell_count());
+    const std::uint8_t codes[] = {0, 1, 2, 255};
+    for (std::size_t i = 0; i < r.size(); ++i) {
+        const bool free = i < spec.cells_per_scenario();
+        r.outcome[i] = codes[i % 4];
+        r.max_rotation[i] = 1.0 / 3.0 + 0.1 * static_cast<double>(i);
+        r.impacts[i] = static_cast<std::int32_t>(7 * i) - 5;
+        r.t_overturn[i] = (r.outcome[i] == 1 || r.outcome[i] == 2) ? 1.5 + std::ldexp(1.0, -40) * i : NAN;
+        r.peak_force_ratio[i] = free ? NAN : 0.01 * static_cast<double>(i);
+        r.broken[i] = static_cast<std::uint8_t>(i % 4);
+        r.done[i] = (all_done || i % 5 != 0) ? 1 : 0;
+    }
+    return r;
+}
+
+Provenance some_provenance() {
+    Provenance p;
+    p.version = "0.1.0";
+    p.config_text = "[sweep]\nomega-ratio = [1, 4]\n";
+    p.method = "events";
+    p.steps_per_period = 48;
+    p.paper_dt_s = 0.0025;
+    p.created_utc = "2024-01-02T03:04:05Z";
+    p.ranks = 3;
+    p.wall_s = 12.5;
+    return p;
+}
+
+/// Bitwise equality of double columns, so NaN == NaN and -0.0 != 0.0.
+std::vector<std::uint64_t> bits(const std::vector<double>& v) {
+    std::vector<std::uint64_t> b;
+    for (double x : v) b.push_back(std::bit_cast<std::uint64_t>(x));
+    return b;
+}
+
+void expect_same_results(const SweepResults& a, const SweepResults& b) {
+    EXPECT_EQ(a.outcome, b.outcome);
+    EXPECT_EQ(bits(a.max_rotation), bits(b.max_rotation));
+    EXPECT_EQ(a.impacts, b.impacts);
+    EXPECT_EQ(bits(a.t_overturn), bits(b.t_overturn));
+    EXPECT_EQ(bits(a.peak_force_ratio), bits(b.peak_force_ratio));
+    EXPECT_EQ(a.broken, b.broken);
+    EXPECT_EQ(a.done, b.done);
+}
+
+History known_history(std::size_t n) {
+    History h;
+    for (std::size_t i = 0; i < n; ++i) {
+        const double t = 0.01 * static_cast<double>(i);
+        h.t.push_back(t);
+        h.theta.push_back(0.1 * std::sin(7.0 * t) / 3.0);
+        h.theta_dot.push_back(0.7 * std::cos(7.0 * t) / 3.0);
+        h.k_left.push_back(i < n / 2 ? 1.2345678901234567e6 : 0.0);
+        h.k_right.push_back(9.87654321e5);
+        h.ground_acc.push_back(-2.5 * std::sin(3.0 * t));
+        h.w_excitation.push_back(1e-3 * t * t);
+        h.w_anchorage.push_back(i == 3 ? NAN : -1e-4 * t);
+    }
+    h.result.outcome = Outcome::overturned_impact;
+    h.result.impacts = 2;
+    h.result.impacts_total = 5;
+    h.result.t_overturn_s = 3.25;
+    h.result.max_rotation = 7.0;
+    h.result.peak_force_ratio = 0.875;
+    h.result.broken = broken_left;
+    return h;
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------
+// Spectra file
+
+TEST(SpectraFile, RoundTripIsExactAndLeavesNoTmp) {
+    TempDir dir;
+    const SweepSpec spec = small_spec();
+    const SweepResults r = known_results(spec);
+    const std::string path = dir.file("spectra.h5");
+    write_spectra(path, spec, r, some_provenance());
+
+    EXPECT_TRUE(fs::exists(path));
+    EXPECT_FALSE(fs::exists(path + ".tmp"));
+    expect_same_results(read_spectra_results(path, spec), r);
+}
+
+TEST(SpectraFile, LayoutAxesScalesAndAttributes) {
+    TempDir dir;
+    const SweepSpec spec = small_spec();
+    const std::string path = dir.file("spectra.h5");
+    write_spectra(path, spec, known_results(spec), some_provenance());
+
+    const h5::File f = h5::File::open_read_only(path);
+    EXPECT_TRUE(f.exists("spectra/free/outcome"));
+    EXPECT_FALSE(f.exists("spectra/nope/outcome"));  // a missing parent is "no", not an error
+    EXPECT_EQ(f.children(), (std::vector<std::string>{"axes", "provenance", "spectra"}));
+    EXPECT_EQ(h5::read_1d<double>(f, "axes/omega_ratio"), spec.omega_ratio.values());
+    EXPECT_EQ(h5::read_1d<double>(f, "axes/amplitude_ratio"), spec.amplitude_ratio.values());
+
+    {
+        const h5::Dataset omega = f.open_dataset("axes/omega_ratio");
+        const h5::Dataset amp = f.open_dataset("axes/amplitude_ratio");
+        EXPECT_EQ(h5::read_string_attribute(omega, "long_name"), "omega_p / p");
+        EXPECT_EQ(h5::read_string_attribute(amp, "long_name"), "a_p0 / (alpha g)");
+        EXPECT_EQ(h5::read_string_attribute(amp, "units"), "1");
+        for (const char* name : {"outcome", "max_rotation", "impacts", "t_overturn",
+                                 "peak_force_ratio", "broken", "done"}) {
+            SCOPED_TRACE(name);
+            const h5::Dataset ds = f.open_dataset(std::string("spectra/free/") + name);
+            // Shape [n_amp, n_omega], amplitude on dimension 0.
+            EXPECT_EQ(ds.dims(), (std::vector<hsize_t>{3, 4}));
+            EXPECT_TRUE(h5::is_attached(ds, amp, 0));
+            EXPECT_TRUE(h5::is_attached(ds, omega, 1));
+            EXPECT_FALSE(h5::is_attached(ds, omega, 0));
+            EXPECT_EQ(h5::read_string_attribute(ds, "dimensions"), "amplitude_ratio, omega_ratio");
+        }
+        // Explicit little-endian file types.
+        const h5::Dataset outcome = f.open_dataset("spectra/free/outcome");
+        EXPECT_GT(H5Tequal(outcome.type().id(), H5T_STD_U8LE), 0);
+        EXPECT_GT(H5Tequal(f.open_dataset("spectra/free/impacts").type().id(), H5T_STD_I32LE), 0);
+        EXPECT_GT(H5Tequal(f.open_dataset("spectra/free/t_overturn").type().id(), H5T_IEEE_F64LE), 0);
+        EXPECT_EQ(h5::read_string_attribute(outcome, "flag_meanings"),
+                  "safe overturned_with_impact overturned_without_impact not_converged");
+        // flag_values is a uint8 array [0, 1, 2, 255].
+        const hid_t a = H5Aopen(outcome.id(), "flag_values", H5P_DEFAULT);
+        ASSERT_GE(a, 0);
+        std::uint8_t values[4] = {};
+        EXPECT_GE(H5Aread(a, H5T_NATIVE_UINT8, values), 0);
+        H5Aclose(a);
+        EXPECT_EQ(std::vector<std::uint8_t>(values, values + 4), (std::vector<std::uint8_t>{0, 1, 2, 255}));
+    }
+
+    // Root: block and pulse parameters, completeness.
+    EXPECT_DOUBLE_EQ(h5::read_double_attribute(f, "half_width_m"), 0.3);
+    EXPECT_DOUBLE_EQ(h5::read_double_attribute(f, "half_height_m"), 1.36);
+    EXPECT_EQ(h5::read_double_attribute(f, "alpha_rad"), spec.block.alpha_rad);
+    EXPECT_EQ(h5::read_double_attribute(f, "phase_rad"), 0.25);
+    EXPECT_EQ(h5::read_string_attribute(f, "equations"), "nonlinear");
+    EXPECT_EQ(h5::read_int64_attribute(f, "n_cells"), 24);
+    EXPECT_EQ(h5::read_int64_attribute(f, "n_done"), 24 - 5);  // i % 5 == 0 are pending
+    EXPECT_EQ(h5::read_int64_attribute(f, "complete"), 0);
+
+    {
+        const h5::Group g = f.open_group("spectra/constant_alpha");
+        EXPECT_EQ(h5::read_string_attribute(g, "anchorage"), "constant");
+        EXPECT_EQ(h5::read_double_attribute(g, "strength_N"), 0.4 * 3361 * 9.81);
+        EXPECT_EQ(h5::read_double_attribute(g, "theta_f_rad"), spec.block.alpha_rad);
+        EXPECT_EQ(h5::read_double_attribute(g, "k_max_N_per_m"), spec.scenarios[1].anchorage.k_max);
+        EXPECT_EQ(h5::read_int64_attribute(g, "index"), 1);
+        EXPECT_EQ(h5::read_string_attribute(f.open_group("spectra/free"), "anchorage"), "free");
+    }
+    {
+        const h5::Group p = f.open_group("provenance");
+        EXPECT_EQ(h5::read_string_attribute(p, "config"), "[sweep]\nomega-ratio = [1, 4]\n");
+        EXPECT_EQ(h5::read_int64_attribute(p, "ranks"), 3);
+        EXPECT_EQ(h5::read_double_attribute(p, "wall_s"), 12.5);
+        EXPECT_EQ(h5::read_string_attribute(p, "created_utc"), "2024-01-02T03:04:05Z");
+    }
+    // Run-dependent values live only under /provenance.
+    EXPECT_FALSE(f.has_attribute("ranks"));
+    EXPECT_FALSE(f.has_attribute("wall_s"));
+    EXPECT_FALSE(f.has_attribute("created_utc"));
+}
+
+TEST(SpectraFile, SameInputsGiveByteIdenticalFiles) {
+    // No object timestamps, nothing run-dependent outside /provenance: two writes of the same
+    // results and provenance are the same bytes (so h5diff of two runs differs only there).
+    TempDir dir;
+    const SweepSpec spec = small_spec();
+    const SweepResults r = known_results(spec);
+    write_spectra(dir.file("a.h5"), spec, r, some_provenance());
+    write_spectra(dir.file("b.h5"), spec, r, some_provenance());
+    auto slurp = [](const std::string& p) {
+        std::ifstream in(p, std::ios::binary);
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    };
+    EXPECT_EQ(slurp(dir.file("a.h5")), slurp(dir.file("b.h5")));
+
+    const h5::File f = h5::File::open_read_only(dir.file("a.h5"));
+    for (const char* name : {"/", "/spectra/free", "/spectra/free/outcome", "/axes/omega_ratio"}) {
+        H5O_info_t info{};
+        ASSERT_GE(H5Oget_info_by_name2(f.id(), name, &info, H5O_INFO_TIME, H5P_DEFAULT), 0);
+        EXPECT_EQ(info.ctime, 0) << name;
+        EXPECT_EQ(info.mtime, 0) << name;
+    }
+}
+
+TEST(SpectraFile, CompleteWhenEveryCellIsDone) {
+    TempDir dir;
+    const SweepSpec spec = small_spec();
+    const std::string path = dir.file("spectra.h5");
+    write_spectra(path, spec, known_results(spec, true), some_provenance());
+    const h5::File f = h5::File::open_read_only(path);
+    EXPECT_EQ(h5::read_int64_attribute(f, "complete"), 1);
+    EXPECT_EQ(h5::read_int64_attribute(f, "n_done"), 24);
+}
+
+TEST(SpectraFile, MissingDirectoryThrowsAndLeavesNoFile) {
+    TempDir dir;
+    const SweepSpec spec = small_spec();
+    const std::string path = dir.file("no_such_dir/spectra.h5");
+    try {
+        write_spectra(path, spec, known_results(spec), some_provenance());
+        FAIL() << "expected InputError";
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.field(), "output");
+        EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(fs::exists(path));
+    EXPECT_FALSE(fs::exists(path + ".tmp"));
+}
+
+TEST(SpectraFile, FailedRenameIsAnInputErrorAndLeavesNoTmp) {
+    // A directory where the file should go: the tmp file is written, the rename fails.
+    TempDir dir;
+    const SweepSpec spec = small_spec();
+    const std::string path = dir.file("taken.h5");
+    fs::create_directory(path);
+    try {
+        write_spectra(path, spec, known_results(spec), some_provenance());
+        FAIL() << "expected InputError";
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.field(), "output");
+        EXPECT_NE(std::string(e.what()).find("writable"), std::string::npos) << e.what();
+    }
+    EXPECT_TRUE(fs::is_directory(path));
+    EXPECT_FALSE(fs::exists(path + ".tmp"));
+}
+
+TEST(SpectraFile, FailureMidWriteKeepsThePreviousFile) {
+    TempDir dir;
+    const SweepSpec spec = small_spec();
+    const std::string path = dir.file("spectra.h5");
+    const SweepResults first = known_results(spec);
+    write_spectra(path, spec, first, some_provenance());
+
+    // A NUL inside the config text cannot go into a C string attribute: the writer fails
+    // after the tmp file has been created and most of it written.
+    Provenance bad = some_provenance();
+    bad.config_text = std::string("a\0b", 3);
+    EXPECT_THROW(write_spectra(path, spec, known_results(spec, true), bad), Hdf5Error);
+    EXPECT_FALSE(fs::exists(path + ".tmp"));
+    expect_same_results(read_spectra_results(path, spec), first);
+}
+
+TEST(SpectraFile, RejectsMismatchedColumnsAndBadNames) {
+    TempDir dir;
+    SweepSpec spec = small_spec();
+    SweepResults r = known_results(spec);
+    r.impacts.pop_back();
+    EXPECT_THROW(write_spectra(dir.file("a.h5"), spec, r, some_provenance()), std::invalid_argument);
+
+    spec.scenarios[1].name = "free";  // a repeated group name
+    EXPECT_THROW(write_spectra(dir.file("a.h5"), spec, known_results(spec), some_provenance()),
+                 InputError);
+    spec.scenarios[1].name = "a/b";
+    EXPECT_THROW(write_spectra(dir.file("a.h5"), spec, known_results(spec), some_provenance()),
+                 InputError);
+    EXPECT_FALSE(fs::exists(dir.file("a.h5")));
+}
+
+TEST(SpectraFile, ReadRejectsADifferentSweep) {
+    TempDir dir;
+    const SweepSpec spec = small_spec();
+    const std::string path = dir.file("spectra.h5");
+    write_spectra(path, spec, known_results(spec), some_provenance());
+
+    auto expect_rejected = [&](const SweepSpec& other, const std::string& mentions) {
+        try {
+            read_spectra_results(path, other);
+            ADD_FAILURE() << "expected InputError mentioning " << mentions;
+        } catch (const InputError& e) {
+            const std::string what = e.what();
+            EXPECT_NE(what.find(path), std::string::npos) << what;
+            EXPECT_NE(what.find(mentions), std::string::npos) << what;
+        }
+    };
+    SweepSpec more_points = spec;
+    more_points.omega_ratio.points = 5;
+    expect_rejected(more_points, "omega_ratio");
+
+    SweepSpec other_range = spec;
+    other_range.amplitude_ratio.hi = 3.5;
+    expect_rejected(other_range, "amplitude_ratio");
+
+    SweepSpec other_scenarios = spec;
+    other_scenarios.scenarios[1].name = "constant_half";
+    expect_rejected(other_scenarios, "scenarios");
+
+    SweepSpec other_anchorage = spec;
+    other_anchorage.scenarios[1].anchorage =
+        constant_anchorage(spec.block, 0.4 * 3361 * 9.81, spec.block.alpha_rad / 2);
+    expect_rejected(other_anchorage, "constant_alpha");
+
+    SweepSpec other_block = spec;
+    other_block.block = rectangular_block(0.3, 1.5, 3361);
+    expect_rejected(other_block, "half_height_m");
+
+    SweepSpec other_equations = spec;
+    other_equations.equations = Equations::linearised;
+    expect_rejected(other_equations, "equations");
+}
+
+TEST(SpectraFile, ReadOfMissingFileIsAnInputError) {
+    TempDir dir;
+    EXPECT_THROW(read_spectra_results(dir.file("absent.h5"), small_spec()), InputError);
+}
+
+// ---------------------------------------------------------------------------------------
+// HDF5 layer
+
+TEST(Hdf5, ErrorsCarryHdf5Text) {
+    TempDir dir;
+    const std::string path = dir.file("absent.h5");
+    try {
+        h5::File::open_read_only(path);
+        FAIL() << "expected Hdf5Error";
+    } catch (const Hdf5Error& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find(path), std::string::npos) << what;
+        EXPECT_NE(what.find("unable to open file"), std::string::npos) << what;
+    }
+}
+
+TEST(Hdf5, LargeDatasetsAreChunkedWithShuffleAndDeflate) {
+    TempDir dir;
+    const std::string path = dir.file("big.h5");
+    std::vector<double> big(300 * 200);
+    for (std::size_t i = 0; i < big.size(); ++i) big[i] = static_cast<double>(i % 17) * 0.5;
+    const std::vector<std::uint8_t> small = {1, 2, 3};
+    {
+        h5::File f = h5::File::create(path);
+        {
+            h5::write_2d<double>(f, "big", big, 300, 200);
+            h5::write_1d<std::uint8_t>(f, "small", small);
+        }
+        f.close();
+    }
+    const h5::File f = h5::File::open_read_only(path);
+    {
+        const h5::Dataset ds = f.open_dataset("big");
+        const h5::PropertyList dcpl(H5Dget_create_plist(ds.id()));
+        EXPECT_EQ(H5Pget_layout(dcpl.id()), H5D_CHUNKED);
+        ASSERT_EQ(H5Pget_nfilters(dcpl.id()), 2);
+        unsigned flags = 0;
+        std::size_t n = 0;
+        EXPECT_EQ(H5Pget_filter2(dcpl.id(), 0, &flags, &n, nullptr, 0, nullptr, nullptr), H5Z_FILTER_SHUFFLE);
+        unsigned level = 0;
+        n = 1;
+        EXPECT_EQ(H5Pget_filter2(dcpl.id(), 1, &flags, &n, &level, 0, nullptr, nullptr), H5Z_FILTER_DEFLATE);
+        EXPECT_EQ(level, 4u);
+        const h5::Dataset s = f.open_dataset("small");
+        const h5::PropertyList small_dcpl(H5Dget_create_plist(s.id()));
+        EXPECT_EQ(H5Pget_layout(small_dcpl.id()), H5D_CONTIGUOUS);
+    }
+    const h5::Array2<double> back = h5::read_2d<double>(f, "big");
+    EXPECT_EQ(back.rows, 300u);
+    EXPECT_EQ(back.cols, 200u);
+    EXPECT_EQ(back.values, big);
+    EXPECT_EQ(h5::read_1d<std::uint8_t>(f, "small"), small);
+    // Reading with the wrong element type fails rather than converting.
+    EXPECT_THROW(h5::read_1d<std::int32_t>(f, "small"), Hdf5Error);
+    EXPECT_THROW(h5::read_1d<double>(f, "big"), Hdf5Error);  // 2-D, not 1-D
+}
+
+TEST(Hdf5, AttributesRoundTripIncludingLongText) {
+    TempDir dir;
+    const std::string path = dir.file("attrs.h5");
+    // Larger than the 64 KiB an object header can hold: needs the 1.8 format's dense storage.
+    std::string long_text;
+    while (long_text.size() < 100'000) long_text += "key = \"value\" # comment\n";
+    {
+        h5::File f = h5::File::create(path);
+        h5::write_attribute(f, "x", 0.1);
+        h5::write_attribute(f, "n", std::int64_t{-42});
+        h5::write_attribute(f, "count", std::size_t{7});
+        h5::write_attribute(f, "empty", "");
+        h5::write_attribute(f, "utf8", "θ_f = α/2");
+        h5::write_attribute(f, "long", long_text);
+        h5::write_attribute(f, "x", 0.2);  // replaces
+        f.close();
+    }
+    const h5::File f = h5::File::open_read_only(path);
+    EXPECT_EQ(h5::read_double_attribute(f, "x"), 0.2);
+    EXPECT_EQ(h5::read_int64_attribute(f, "n"), -42);
+    EXPECT_EQ(h5::read_int64_attribute(f, "count"), 7);
+    EXPECT_EQ(h5::read_double_attribute(f, "count"), 7.0);
+    EXPECT_EQ(h5::read_string_attribute(f, "empty"), "");
+    EXPECT_EQ(h5::read_string_attribute(f, "utf8"), "θ_f = α/2");
+    EXPECT_EQ(h5::read_string_attribute(f, "long"), long_text);
+    EXPECT_THROW(h5::read_int64_attribute(f, "x"), Hdf5Error);
+    EXPECT_THROW(h5::read_double_attribute(f, "missing"), Hdf5Error);
+}
+
+TEST(Hdf5, CloseRefusesWhileObjectsAreOpen) {
+    TempDir dir;
+    {
+        h5::File f = h5::File::create(dir.file("open.h5"));
+        const h5::Group g = f.create_group("g");
+        try {
+            f.close();
+            ADD_FAILURE() << "expected Hdf5Error";
+        } catch (const Hdf5Error& e) {
+            EXPECT_NE(std::string(e.what()).find("open.h5"), std::string::npos) << e.what();
+        }
+    }
+    // The destructor closed the file once the group was gone: nothing is left open in this
+    // process (run as one binary, this also covers the tests before it).
+    EXPECT_EQ(H5Fget_obj_count(H5F_OBJ_ALL, H5F_OBJ_ALL), 0);
+}
+
+// ---------------------------------------------------------------------------------------
+// History files
+
+TEST(HistoryFile, H5RoundTrip) {
+    TempDir dir;
+    const History h = known_history(50);
+    const std::string path = dir.file("history.h5");
+    write_history_h5(path, h, {{"scenario", "constant_alpha"}}, {{"omega_ratio", 2.5}});
+    EXPECT_FALSE(fs::exists(path + ".tmp"));
+
+    const h5::File f = h5::File::open_read_only(path);
+    EXPECT_EQ(bits(h5::read_1d<double>(f, "t")), bits(h.t));
+    EXPECT_EQ(bits(h5::read_1d<double>(f, "theta")), bits(h.theta));
+    EXPECT_EQ(bits(h5::read_1d<double>(f, "theta_dot")), bits(h.theta_dot));
+    EXPECT_EQ(bits(h5::read_1d<double>(f, "k_left")), bits(h.k_left));
+    EXPECT_EQ(bits(h5::read_1d<double>(f, "k_right")), bits(h.k_right));
+    EXPECT_EQ(bits(h5::read_1d<double>(f, "ground_acc")), bits(h.ground_acc));
+    EXPECT_EQ(bits(h5::read_1d<double>(f, "w_excitation")), bits(h.w_excitation));
+    EXPECT_EQ(bits(h5::read_1d<double>(f, "w_anchorage")), bits(h.w_anchorage));
+    {
+        const h5::Dataset t = f.open_dataset("t");
+        const h5::Dataset theta = f.open_dataset("theta");
+        EXPECT_TRUE(h5::is_attached(theta, t, 0));
+        EXPECT_TRUE(h5::is_attached(f.open_dataset("w_anchorage"), t, 0));
+        EXPECT_EQ(h5::read_string_attribute(t, "units"), "s");
+        EXPECT_EQ(h5::read_string_attribute(theta, "units"), "rad");
+        EXPECT_EQ(h5::read_string_attribute(f.open_dataset("theta_dot"), "units"), "rad/s");
+        EXPECT_EQ(h5::read_string_attribute(f.open_dataset("k_right"), "units"), "N/m");
+        EXPECT_EQ(h5::read_string_attribute(f.open_dataset("ground_acc"), "units"), "m/s^2");
+        EXPECT_EQ(h5::read_string_attribute(f.open_dataset("w_excitation"), "units"), "J");
+    }
+    EXPECT_EQ(h5::read_string_attribute(f, "outcome"), to_string(Outcome::overturned_impact));
+    EXPECT_EQ(h5::read_int64_attribute(f, "outcome_code"), 1);
+    EXPECT_EQ(h5::read_int64_attribute(f, "impacts"), 2);
+    EXPECT_EQ(h5::read_int64_attribute(f, "impacts_total"), 5);
+    EXPECT_EQ(h5::read_double_attribute(f, "t_overturn"), 3.25);
+    EXPECT_EQ(h5::read_double_attribute(f, "max_rotation"), 7.0);
+    EXPECT_EQ(h5::read_double_attribute(f, "peak_force_ratio"), 0.875);
+    EXPECT_NE(h5::read_string_attribute(f, "work_sign_convention").find("negative"), std::string::npos);
+    EXPECT_EQ(h5::read_string_attribute(f, "scenario"), "constant_alpha");
+    EXPECT_EQ(h5::read_double_attribute(f, "omega_ratio"), 2.5);
+}
+
+TEST(HistoryFile, H5RejectsRaggedColumns) {
+    TempDir dir;
+    History h = known_history(10);
+    h.k_left.pop_back();
+    EXPECT_THROW(write_history_h5(dir.file("h.h5"), h, {}, {}), std::invalid_argument);
+    EXPECT_FALSE(fs::exists(dir.file("h.h5")));
+}
+
+TEST(HistoryFile, CsvRoundTripAtFullPrecision) {
+    TempDir dir;
+    const History h = known_history(20);
+    const std::string path = dir.file("history.csv");
+    write_history_csv(path, h);
+    EXPECT_FALSE(fs::exists(path + ".tmp"));
+
+    std::ifstream in(path);
+    std::string header;
+    std::getline(in, header);
+    EXPECT_EQ(header,
+              "t_s,theta_rad,theta_dot_rad_s,k_left_N_m,k_right_N_m,ground_acc_m_s2,"
+              "w_excitation_J,w_anchorage_J");
+    const std::vector<const std::vector<double>*> cols = {
+        &h.t, &h.theta, &h.theta_dot, &h.k_left, &h.k_right, &h.ground_acc, &h.w_excitation,
+        &h.w_anchorage};
+    std::string line;
+    std::size_t row = 0;
+    while (std::getline(in, line)) {
+        ASSERT_LT(row, h.t.size());
+        std::stringstream ss(line);
+        std::string cell;
+        for (std::size_t c = 0; c < cols.size(); ++c) {
+            ASSERT_TRUE(std::getline(ss, cell, ',')) << "row " << row;
+            const double x = std::strtod(cell.c_str(), nullptr);
+            EXPECT_EQ(std::bit_cast<std::uint64_t>(x), std::bit_cast<std::uint64_t>((*cols[c])[row]))
+                << "row " << row << " column " << c << ": " << cell;
+        }
+        EXPECT_FALSE(std::getline(ss, cell, ',')) << "extra column in row " << row;
+        ++row;
+    }
+    EXPECT_EQ(row, h.t.size());
+}
+
+TEST(HistoryFile, CsvInMissingDirectoryThrows) {
+    TempDir dir;
+    const std::string path = dir.file("nope/history.csv");
+    EXPECT_THROW(write_history_csv(path, known_history(3)), InputError);
+    EXPECT_FALSE(fs::exists(path));
+    EXPECT_FALSE(fs::exists(path + ".tmp"));
+}
