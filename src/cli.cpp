@@ -212,6 +212,10 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
     sweep->add_flag("-q,--quiet", sweep_cmd.quiet, "No progress output");
     sweep->add_option("--chunk", sweep_cmd.max_chunk, "Largest chunk of cells handed to a rank")
         ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 20))->capture_default_str();
+    sweep->add_option("--refine", sweep_cmd.refine_stride,
+                      "Boundary refinement: compute every STRIDE-th cell, then only where outcomes differ, "
+                      "halving the spacing down to the full grid (0: compute every cell)")
+        ->check(CLI::IsMember({0, 2, 4, 8, 16, 32, 64, 128}))->capture_default_str();
     sweep->add_option("--checkpoint-interval", sweep_cmd.checkpoint_s, "Seconds between saves of the finished cells")
         ->check(number_in(0.1, 86400))->capture_default_str();
 

@@ -200,11 +200,13 @@ void write_scenario(const h5::Group& spectra, std::size_t index, const SweepSpec
     }
     {
         const h5::Dataset ds = write_grid(g, "done", r.done, index, spec, axes);
-        const std::uint8_t values[] = {0, 1};
+        const std::uint8_t values[] = {0, 1, 2};
         h5::write_attribute(ds, "long_name", "cell computed");
         h5::write_attribute(ds, "flag_values", std::span<const std::uint8_t>(values));
-        h5::write_attribute(ds, "flag_meanings", "pending computed");
-        h5::write_attribute(ds, "comment", "the other datasets are meaningful only where done = 1");
+        h5::write_attribute(ds, "flag_meanings", "pending computed inferred");
+        h5::write_attribute(ds, "comment",
+                            "the other datasets are meaningful only where done = 1; done = 2: outcome inferred by "
+                            "boundary refinement from a uniform square of computed cells (other datasets NaN/0)");
     }
 }
 

@@ -58,7 +58,7 @@ void SweepResults::store(std::size_t i, const CellResult& r) {
 }
 
 std::size_t SweepResults::done_count() const {
-    return static_cast<std::size_t>(std::count(done.begin(), done.end(), std::uint8_t{1}));
+    return static_cast<std::size_t>(std::count_if(done.begin(), done.end(), [](std::uint8_t d) { return d != 0; }));
 }
 
 void compute_cells(const SweepSpec& spec, const IntegratorSettings& settings, std::size_t first,

@@ -9,6 +9,7 @@
 #include "rocksweep/cli.hpp"
 #include "rocksweep/errors.hpp"
 #include "rocksweep/progress.hpp"
+#include "rocksweep/refine.hpp"
 #include "rocksweep/scheduler.hpp"
 #include "rocksweep/spectra_file.hpp"
 
@@ -127,9 +128,6 @@ int run_sweep(const Options& opts, const SweepCommand& cmd, const std::string& c
 
     SweepResults& results = start.results;
     const std::size_t total = spec.cell_count();
-    std::size_t todo_cells = 0;
-    for (const IndexRange& r : start.todo) todo_cells += r.count;
-    Progress progress(todo_cells, cmd.quiet || !mpi.is_root());
     std::size_t done_now = 0;
     const double t0 = MPI_Wtime();
     double last_save = t0;
@@ -138,6 +136,7 @@ int run_sweep(const Options& opts, const SweepCommand& cmd, const std::string& c
         write_spectra(cmd.output, spec, results, prov);
         last_save = MPI_Wtime();
     };
+    Progress* progress = nullptr;
 
     ScheduleOptions so;
     so.record_bytes = sizeof(CellResult);
@@ -145,7 +144,7 @@ int run_sweep(const Options& opts, const SweepCommand& cmd, const std::string& c
     so.min_chunk = std::min<std::size_t>(8, cmd.max_chunk);
     so.stop_requested = [] { return g_signal != 0; };
     so.on_tick = [&] {
-        progress.update(done_now);
+        if (progress) progress->update(done_now);
         if (MPI_Wtime() - last_save >= cmd.checkpoint_s) save();
     };
     const int lanes = opts.numerics.lanes;
@@ -162,20 +161,53 @@ int run_sweep(const Options& opts, const SweepCommand& cmd, const std::string& c
         }
         done_now += count;
     };
+    const auto scheduler = make_mpi_scheduler(mpi.comm());
+    auto run_pass = [&](const std::vector<IndexRange>& todo) {
+        std::size_t n = 0;
+        for (const IndexRange& r : todo) n += r.count;
+        Progress bar(n, cmd.quiet || !mpi.is_root());
+        progress = &bar;
+        done_now = 0;
+        ScheduleStats stats;
+        {
+            SignalGuard guard;
+            stats = scheduler->run(todo, so, compute, sink);
+        }
+        bar.update(done_now);
+        bar.finish();
+        progress = nullptr;
+        return stats;
+    };
 
     if (mpi.is_root()) {
         log << "sweep: " << spec.scenarios.size() << " scenarios x " << spec.amplitude_ratio.points << " amplitudes x "
             << spec.omega_ratio.points << " frequencies = " << total << " cells on " << mpi.size() << " rank(s) -> "
             << cmd.output << "\n";
     }
-    ScheduleStats stats;
-    {
-        SignalGuard guard;
-        stats = make_mpi_scheduler(mpi.comm())->run(start.todo, so, compute, sink);
+    bool stopped = false;
+    if (cmd.refine_stride == 0) {
+        stopped = run_pass(start.todo).stopped;
+    } else {
+        // Every rank runs the same number of passes; only rank 0 knows each pass's cells.
+        const std::size_t per = spec.cells_per_scenario();
+        const Refinement refine(spec.amplitude_ratio.points, spec.omega_ratio.points, cmd.refine_stride);
+        for (int k = 0; k < refine.passes() && !stopped; ++k) {
+            std::vector<IndexRange> todo;
+            if (mpi.is_root()) {
+                for (std::size_t s = 0; s < spec.scenarios.size(); ++s)
+                    for (std::size_t i : refine.cells_for_pass(k, &results.outcome[s * per], &results.done[s * per])) {
+                        if (!todo.empty() && todo.back().first + todo.back().count == s * per + i) ++todo.back().count;
+                        else todo.push_back({s * per + i, 1});
+                    }
+                if (!cmd.quiet) log << "refinement pass " << k + 1 << " of " << refine.passes() << "\n";
+            }
+            stopped = run_pass(todo).stopped;
+        }
+        if (mpi.is_root() && !stopped)
+            for (std::size_t s = 0; s < spec.scenarios.size(); ++s)
+                refine.fill(&results.outcome[s * per], &results.done[s * per]);
     }
-    if (!mpi.is_root()) return stats.stopped ? 128 + (g_signal ? g_signal : SIGINT) : 0;
-    progress.update(done_now);
-    progress.finish();
+    if (!mpi.is_root()) return stopped ? 128 + (g_signal ? g_signal : SIGINT) : 0;
     save();
     const std::size_t done = results.done_count();
     if (done < total) {

@@ -16,6 +16,7 @@ struct SweepCommand {
     bool resume = false, overwrite = false, quiet = false;
     std::size_t max_chunk = 256;
     double checkpoint_s = 5.0;
+    std::size_t refine_stride = 0;  ///< 0: every cell; else boundary refinement from this spacing
 };
 
 /// Runs a sweep on every rank of `mpi`; rank 0 writes `cmd.output`. Returns the exit status.

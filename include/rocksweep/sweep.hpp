@@ -54,7 +54,7 @@ struct SweepResults {
     std::vector<double> t_overturn;
     std::vector<double> peak_force_ratio;
     std::vector<std::uint8_t> broken;
-    std::vector<std::uint8_t> done;  ///< 1 once the cell's result is in
+    std::vector<std::uint8_t> done;  ///< 0 pending, 1 computed, 2 outcome inferred (refine.hpp)
 
     void resize(std::size_t n);
     std::size_t size() const { return outcome.size(); }
