@@ -143,6 +143,7 @@ int run_sweep(const Options& opts, const SweepCommand& cmd, const std::string& c
     so.max_chunk = cmd.max_chunk;
     so.min_chunk = std::min<std::size_t>(8, cmd.max_chunk);
     so.stop_requested = [] { return g_signal != 0; };
+    so.tick_interval_s = std::min(0.5, cmd.checkpoint_s / 2);
     so.on_tick = [&] {
         if (progress) progress->update(done_now);
         if (MPI_Wtime() - last_save >= cmd.checkpoint_s) save();
