@@ -39,10 +39,13 @@ Swing outward_swing(const CellModel& m, double ke, double kappa_out, double kapp
                     double break_angle) {
     Swing sw;
     const double cap = std::min(break_angle, M_PI / 2);
-    // The first maximum of V on [0, cap]: V rises on [0, alpha]; past alpha a spring can keep
-    // it rising. A block that turns before that maximum never meets what lies beyond it.
+    // The first maximum of V on [0, cap]: V rises on [0, alpha], and without a spring it falls
+    // after; a spring can keep it rising past alpha. A block that turns before that maximum
+    // never meets what lies beyond it.
     double lim = cap;
-    if (m.alpha < cap && potential_slope(m, kappa_out, cap) < 0.0) {
+    if (kappa_out == 0.0) {
+        lim = std::min(cap, m.alpha);
+    } else if (m.alpha < cap && potential_slope(m, kappa_out, cap) < 0.0) {
         double lo = m.alpha, hi = cap;
         constexpr int scan = 32;  // V' may dip and rise: take its first zero
         for (int i = 1; i <= scan; ++i) {
@@ -57,13 +60,24 @@ Swing outward_swing(const CellModel& m, double ke, double kappa_out, double kapp
         lim = lo;
     }
     if (!(ke < potential(m, kappa_out, lim))) return sw;
+    // V(peak) = ke on [0, lim], where V rises: Newton from the small-angle estimate, kept
+    // inside a shrinking bracket (bisection when a Newton step leaves it).
     double lo = 0.0, hi = lim;
-    for (int i = 0; i < 200 && hi - lo > 1e-16; ++i) {
-        const double mid = 0.5 * (lo + hi);
-        (potential(m, kappa_out, mid) < ke ? lo : hi) = mid;
+    const double a = m.p2 * m.alpha, c = 0.5 * m.p2 - 0.25 * kappa_out;  // V ~ a phi - c phi^2
+    double x = (c > 0.0 && a * a > 4.0 * c * ke) ? 2.0 * ke / (a + std::sqrt(a * a - 4.0 * c * ke)) : ke / a;
+    if (!(x > lo && x < hi)) x = 0.5 * (lo + hi);
+    for (int i = 0; i < 100; ++i) {
+        const double f = potential(m, kappa_out, x) - ke;
+        (f < 0.0 ? lo : hi) = x;
+        const double slope = potential_slope(m, kappa_out, x);
+        double next = slope > 0.0 ? x - f / slope : 0.5 * (lo + hi);
+        if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+        const bool converged = std::abs(next - x) <= 4e-16 * x || hi - lo <= 4e-16 * hi;
+        x = next;
+        if (converged) break;
     }
     sw.bounded = true;
-    sw.peak = 0.5 * (lo + hi);
+    sw.peak = x;
     // Coming back with kappa_in: the spring releases only what K_min stores at the peak.
     sw.ke_return = ke + spring_potential(m, kappa_in, sw.peak) - spring_potential(m, kappa_out, sw.peak);
     return sw;

@@ -36,25 +36,33 @@ struct RhsLane {
     bool sine, linear;
 };
 
+/// Ground acceleration / g at time t: (horizontal, vertical).
+struct Ground {
+    double ax = 0.0, ay = 0.0;
+};
+inline Ground ground(const RhsLane& c, double t) {
+    Ground g;
+    if (t < c.t_cut) {
+        if (c.sine) {
+            g.ax = c.ax_g * std::sin(c.omega * t + c.phase);
+            g.ay = c.ay_g == 0.0 ? 0.0 : c.ay_g * std::sin(c.omega * t + c.phase_y);
+        } else {
+            g.ax = c.ax_g;
+        }
+    }
+    return g;
+}
+
 /// theta'' on side s (physics.md §3, Eq. 7 and 9 with the restoring factor s):
 /// -p^2 [(1 + ay) sin(s alpha - theta) + ax cos(s alpha - theta)] - s kappa sin(s theta / 2).
 /// Written on s theta rather than |theta| so that a trial step just past theta = 0 stays smooth.
-inline double rhs(const RhsLane& c, double t, double theta) {
-    double ax = 0.0, ay = 0.0;
-    if (t < c.t_cut) {
-        if (c.sine) {
-            ax = c.ax_g * std::sin(c.omega * t + c.phase);
-            ay = c.ay_g == 0.0 ? 0.0 : c.ay_g * std::sin(c.omega * t + c.phase_y);
-        } else {
-            ax = c.ax_g;
-        }
-    }
+inline double rhs(const RhsLane& c, const Ground& g, double theta) {
     const double s = c.side;
     const double a = s * c.alpha - theta;
     const double sn = c.linear ? a : std::sin(a);
     const double cs = c.linear ? 1.0 : std::cos(a);
     const double spring = c.kappa == 0.0 ? 0.0 : (c.linear ? 0.5 * s * theta : std::sin(0.5 * s * theta));
-    return -c.p2 * ((1.0 + ay) * sn + ax * cs) - s * c.kappa * spring;
+    return -c.p2 * ((1.0 + g.ay) * sn + g.ax * cs) - s * c.kappa * spring;
 }
 
 /// One classical RK4 step per lane; y = (theta, theta_dot). The same scalar code serves every
@@ -68,14 +76,16 @@ struct Batch {
         for (int i = 0; i < W; ++i) {
             const RhsLane& l = c[i];
             const double h = dt[i], t = t0[i], y = y0[i], v = v0[i];
+            // The ground at t, t + h/2 (shared by k2 and k3) and t + h.
+            const Ground g0 = ground(l, t), gm = ground(l, t + 0.5 * h), g1 = ground(l, t + h);
             // k1 = f(t, y)
-            const double k1y = v, k1v = rhs(l, t, y);
+            const double k1y = v, k1v = rhs(l, g0, y);
             // k2 = f(t + h/2, y + h/2 k1)
-            const double k2y = v + 0.5 * h * k1v, k2v = rhs(l, t + 0.5 * h, y + 0.5 * h * k1y);
+            const double k2y = v + 0.5 * h * k1v, k2v = rhs(l, gm, y + 0.5 * h * k1y);
             // k3 = f(t + h/2, y + h/2 k2)
-            const double k3y = v + 0.5 * h * k2v, k3v = rhs(l, t + 0.5 * h, y + 0.5 * h * k2y);
+            const double k3y = v + 0.5 * h * k2v, k3v = rhs(l, gm, y + 0.5 * h * k2y);
             // k4 = f(t + h, y + h k3)
-            const double k4y = v + h * k3v, k4v = rhs(l, t + h, y + h * k3y);
+            const double k4y = v + h * k3v, k4v = rhs(l, g1, y + h * k3y);
             y1[i] = y + h / 6.0 * (k1y + 2.0 * k2y + 2.0 * k3y + k4y);
             v1[i] = v + h / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
             a0[i] = k1v;
@@ -515,9 +525,9 @@ void run_lanes(std::span<const CellModel> cells, std::span<CellResult> results,
 }  // namespace
 
 double rocking_acceleration(const CellModel& m, int side, double kappa, double ax, double ay, double theta) {
-    RhsLane c{m.p2, m.alpha, kappa, ax, ay, 0.0, 0.0, 0.0, INFINITY, side, false,
-              m.equations == Equations::linearised};
-    return rhs(c, 0.0, theta);
+    const RhsLane c{m.p2, m.alpha, kappa, ax, ay, 0.0, 0.0, 0.0, INFINITY, side, false,
+                    m.equations == Equations::linearised};
+    return rhs(c, Ground{ax, ay}, theta);
 }
 
 void integrate_cells(std::span<const CellModel> cells, std::span<CellResult> results,
