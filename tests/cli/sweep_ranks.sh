@@ -9,7 +9,7 @@ grid=(--omega-ratio-points 37 --amplitude-ratio-points 29 --quiet --overwrite)
 mpi=(mpirun --oversubscribe -np "$np")
 [ "$(id -u)" -eq 0 ] && mpi+=(--allow-run-as-root)
 ref="$dir/ref.h5"
-[ -f "$ref" ] || "$rs" sweep --config "$cfg" "${grid[@]}" -o "$ref"
+"$rs" sweep --config "$cfg" "${grid[@]}" -o "$ref"
 for chunk in 1 7 256; do
   out="$dir/np$np-chunk$chunk.h5"
   "${mpi[@]}" "$rs" sweep --config "$cfg" "${grid[@]}" --chunk "$chunk" -o "$out"
@@ -17,7 +17,7 @@ for chunk in 1 7 256; do
   [ "$(h5dump -a /provenance/ranks "$out" | grep -c "(0): $np")" -eq 1 ] || { echo "provenance ranks"; exit 1; }
 done
 refr="$dir/ref-refine.h5"
-[ -f "$refr" ] || "$rs" sweep --config "$cfg" "${grid[@]}" --refine 8 -o "$refr"
+"$rs" sweep --config "$cfg" "${grid[@]}" --refine 8 -o "$refr"
 "${mpi[@]}" "$rs" sweep --config "$cfg" "${grid[@]}" --refine 8 --chunk 5 -o "$dir/np$np-refine.h5"
 h5diff --exclude-path /provenance "$refr" "$dir/np$np-refine.h5" || { echo "np=$np refine differs"; exit 1; }
 echo "np=$np: identical"
