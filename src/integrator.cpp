@@ -490,7 +490,7 @@ private:
 
 template <int W>
 void run_lanes(std::span<const CellModel> cells, std::span<CellResult> results,
-               const IntegratorSettings& settings, const StepObserver* obs) {
+               const IntegratorSettings& settings, const StepObserver* obs, BatchStats* stats = nullptr) {
     Batch<W> b;
     std::array<std::optional<Lane>, W> lane;
     std::array<std::size_t, W> index{};
@@ -512,6 +512,10 @@ void run_lanes(std::span<const CellModel> cells, std::span<CellResult> results,
         for (int i = 0; i < W; ++i)
             if (!lane[i]) b.dt[i] = 0.0;  // idle lane: a harmless zero step
         b.step();
+        if (stats) {
+            ++stats->batch_steps;
+            stats->busy_lane_steps += live;
+        }
         for (int i = 0; i < W; ++i) {
             if (!lane[i]) continue;
             lane[i]->finish_step(b, i);
@@ -531,13 +535,14 @@ double rocking_acceleration(const CellModel& m, int side, double kappa, double a
 }
 
 void integrate_cells(std::span<const CellModel> cells, std::span<CellResult> results,
-                     const IntegratorSettings& settings, int lanes) {
+                     const IntegratorSettings& settings, int lanes, BatchStats* stats) {
     if (results.size() != cells.size()) throw std::invalid_argument("integrate_cells: size mismatch");
+    if (stats) stats->lanes = lanes;
     switch (lanes) {
-        case 1: return run_lanes<1>(cells, results, settings, nullptr);
-        case 4: return run_lanes<4>(cells, results, settings, nullptr);
-        case 8: return run_lanes<8>(cells, results, settings, nullptr);
-        case 16: return run_lanes<16>(cells, results, settings, nullptr);
+        case 1: return run_lanes<1>(cells, results, settings, nullptr, stats);
+        case 4: return run_lanes<4>(cells, results, settings, nullptr, stats);
+        case 8: return run_lanes<8>(cells, results, settings, nullptr, stats);
+        case 16: return run_lanes<16>(cells, results, settings, nullptr, stats);
         default: throw std::invalid_argument("integrate_cells: lanes must be 1, 4, 8 or 16");
     }
 }

@@ -36,10 +36,21 @@ struct StepRecord {
 };
 using StepObserver = std::function<void(const StepRecord&)>;
 
+/// How full the batches stayed: lane-steps that advanced a cell / lane-steps in all.
+struct BatchStats {
+    std::int64_t batch_steps = 0;  ///< RK4 steps of the whole batch
+    std::int64_t busy_lane_steps = 0;
+    int lanes = 0;
+    double utilisation() const {
+        return batch_steps ? static_cast<double>(busy_lane_steps) / (static_cast<double>(batch_steps) * lanes) : 0.0;
+    }
+};
+
 /// Runs each cell of `cells` to its outcome, `lanes` cells at a time (1, 4, 8 or 16), a lane
-/// refilled as soon as its cell finishes. results[i] depends only on cells[i].
+/// refilled as soon as its cell finishes. results[i] depends only on cells[i]. Adds to
+/// `stats` when given.
 void integrate_cells(std::span<const CellModel> cells, std::span<CellResult> results,
-                     const IntegratorSettings& settings, int lanes = 8);
+                     const IntegratorSettings& settings, int lanes = 8, BatchStats* stats = nullptr);
 
 /// Same as one lane of integrate_cells, calling `observer` after every accepted step.
 CellResult integrate_cell(const CellModel& cell, const IntegratorSettings& settings,
