@@ -69,7 +69,10 @@ def single_panel(ax, rows):
     ax.set_ylabel(r"max $|\theta(t) - \theta_{ref}(t)|$ [rad]")
     ax.set_title("Single runs through 1-5 impacts (4 cases, 12 times)", fontsize=10)
     ax.grid(True, which="major", alpha=0.3)
-    ax.legend(fontsize=8, loc="center right")
+    handles, _ = ax.get_legend_handles_labels()
+    handles.append(Line2D([], [], color="black", marker="o", markersize=11, markerfacecolor="none",
+                          linestyle="none", label="rocksweep default 48 / paper's 2.5 ms"))
+    ax.legend(handles=handles, fontsize=8, loc="center right")
 
 
 def spectra_panel(ax, rows):

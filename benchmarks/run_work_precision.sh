@@ -20,6 +20,11 @@ for ((i = 0; i < ${#args[@]}; i++)); do
   esac
 done
 
+if ! grep -q 'work_precision.cmake' benchmarks/CMakeLists.txt; then
+  echo "run_work_precision.sh: benchmarks/CMakeLists.txt does not include(work_precision.cmake) yet," >&2
+  echo "  so there is no work_precision target to build." >&2
+  exit 2
+fi
 if [ ! -f "$build/CMakeCache.txt" ]; then
   cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release
 fi

@@ -582,4 +582,17 @@ void publish_atomically(const std::string& path,
     }
 }
 
+void publish_h5_atomically(const std::string& path, const std::function<void(const File&)>& write) {
+    publish_atomically(path, [&](const std::string& tmp) {
+        File f;
+        try {
+            f = File::create(tmp);
+        } catch (const Hdf5Error& e) {
+            throw InputError("output", path, std::string("a writable location (") + e.what() + ")");
+        }
+        write(f);
+        f.close();  // flush errors surface here, before the rename
+    });
+}
+
 }  // namespace rocksweep::h5

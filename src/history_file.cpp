@@ -102,16 +102,7 @@ void write_history_h5(const std::string& path, const History& h,
                       const std::vector<std::pair<std::string, double>>& number_attrs) {
     const std::vector<Column> cols = columns(h);
     check_lengths(cols);
-    h5::publish_atomically(path, [&](const std::string& tmp) {
-        h5::File f;
-        try {
-            f = h5::File::create(tmp);
-        } catch (const Hdf5Error& e) {
-            throw InputError("output", path, std::string("a writable location (") + e.what() + ")");
-        }
-        write_h5_contents(f, h, cols, string_attrs, number_attrs);
-        f.close();
-    });
+    h5::publish_h5_atomically(path, [&](const h5::File& f) { write_h5_contents(f, h, cols, string_attrs, number_attrs); });
 }
 
 void write_history_csv(const std::string& path, const History& h) {

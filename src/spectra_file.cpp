@@ -324,16 +324,7 @@ void write_spectra(const std::string& path, const SweepSpec& spec, const SweepRe
                    const Provenance& prov) {
     check_columns(spec, r);
     check_scenario_names(spec);
-    h5::publish_atomically(path, [&](const std::string& tmp) {
-        h5::File f;
-        try {
-            f = h5::File::create(tmp);
-        } catch (const Hdf5Error& e) {
-            throw InputError("output", path, std::string("a writable location (") + e.what() + ")");
-        }
-        write_contents(f, spec, r, prov);
-        f.close();  // flush errors surface here, before the rename
-    });
+    h5::publish_h5_atomically(path, [&](const h5::File& f) { write_contents(f, spec, r, prov); });
 }
 
 SweepResults read_spectra_results(const std::string& path, const SweepSpec& spec) {

@@ -2,7 +2,6 @@
 // energy, symmetry, restitution, batch = scalar (physics.md §3, §5, §7).
 #include <gtest/gtest.h>
 
-#include <bit>
 #include <cmath>
 #include <map>
 #include <vector>
@@ -50,13 +49,6 @@ double theta_at(const CellModel& m, IntegratorSettings s, double t_end, int* imp
     return theta;
 }
 
-bool same_bits(const CellResult& a, const CellResult& b) {
-    auto bits = [](double x) { return std::bit_cast<std::uint64_t>(x); };
-    return bits(a.max_rotation) == bits(b.max_rotation) && bits(a.t_overturn_s) == bits(b.t_overturn_s) &&
-           bits(a.peak_force_ratio) == bits(b.peak_force_ratio) && a.impacts == b.impacts &&
-           a.impacts_total == b.impacts_total && a.steps == b.steps && a.outcome == b.outcome &&
-           a.broken == b.broken;
-}
 
 }  // namespace
 
@@ -269,7 +261,7 @@ TEST(Batch, EveryLaneOfAMixedBatchEqualsTheScalarPath) {
             std::vector<CellResult> batch(cells.size());
             integrate_cells(cells, batch, s, lanes);
             for (std::size_t i = 0; i < cells.size(); ++i)
-                ASSERT_TRUE(same_bits(batch[i], scalar[i])) << "cell " << i << " lanes " << lanes;
+                ASSERT_TRUE(bitwise_equal(batch[i], scalar[i])) << "cell " << i << " lanes " << lanes;
         }
     }
 }

@@ -2,7 +2,6 @@
 // over random valid cells (issue: fast and accurate, stress tests).
 #include <gtest/gtest.h>
 
-#include <bit>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -29,12 +28,6 @@ bool finite(const CellResult& r) {
     return std::isfinite(r.max_rotation) && !std::isinf(r.t_overturn_s) && !std::isinf(r.peak_force_ratio);
 }
 
-bool same_bits(const CellResult& a, const CellResult& b) {
-    auto bits = [](double x) { return std::bit_cast<std::uint64_t>(x); };
-    return bits(a.max_rotation) == bits(b.max_rotation) && bits(a.t_overturn_s) == bits(b.t_overturn_s) &&
-           bits(a.peak_force_ratio) == bits(b.peak_force_ratio) && a.impacts == b.impacts &&
-           a.impacts_total == b.impacts_total && a.steps == b.steps && a.outcome == b.outcome && a.broken == b.broken;
-}
 
 }  // namespace
 
@@ -179,11 +172,11 @@ TEST(Fuzz, HundredThousandRandomCellsBatchEqualsScalarNoNaNMirrorExact) {
         const std::uint8_t swapped = static_cast<std::uint8_t>(((mirror[i].broken & 1) << 1) | (mirror[i].broken >> 1));
         CellResult m = mirror[i];
         m.broken = swapped;
-        ASSERT_TRUE(same_bits(batch[i], m)) << "mirror differs, cell " << i;
+        ASSERT_TRUE(bitwise_equal(batch[i], m)) << "mirror differs, cell " << i;
     }
     EXPECT_EQ(not_converged, 0u);
     // Every 50th cell once more on the scalar path.
-    for (std::size_t i = 0; i < n; i += 50) ASSERT_TRUE(same_bits(batch[i], integrate_cell(cells[i], s))) << "cell " << i;
+    for (std::size_t i = 0; i < n; i += 50) ASSERT_TRUE(bitwise_equal(batch[i], integrate_cell(cells[i], s))) << "cell " << i;
 }
 
 TEST(Fuzz, EnergyNeverIncreasesInFreeOscillation) {

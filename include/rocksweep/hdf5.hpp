@@ -265,5 +265,9 @@ void set_dimension_label(const Dataset& data, unsigned dim, std::string_view lab
 void publish_atomically(const std::string& path,
                         const std::function<void(const std::string& tmp_path)>& write);
 
+/// publish_atomically for an HDF5 file: creates it at the tmp name (InputError naming `path`
+/// if that fails), lets `write` fill it, closes it (flush errors surface before the rename).
+void publish_h5_atomically(const std::string& path, const std::function<void(const File&)>& write);
+
 }  // namespace h5
 }  // namespace rocksweep

@@ -1,5 +1,6 @@
 #pragma once
 /// What one run of one cell tells (physics.md §5).
+#include <bit>
 #include <cstdint>
 #include <string>
 
@@ -28,5 +29,13 @@ struct CellResult {
     Outcome outcome = Outcome::safe;
     std::uint8_t broken = 0;        ///< broken_left | broken_right
 };
+
+/// True if every field holds the same bits (NaN included): what "identical results" means.
+inline bool bitwise_equal(const CellResult& a, const CellResult& b) {
+    auto bits = [](double x) { return std::bit_cast<std::uint64_t>(x); };
+    return bits(a.max_rotation) == bits(b.max_rotation) && bits(a.t_overturn_s) == bits(b.t_overturn_s) &&
+           bits(a.peak_force_ratio) == bits(b.peak_force_ratio) && a.impacts == b.impacts &&
+           a.impacts_total == b.impacts_total && a.steps == b.steps && a.outcome == b.outcome && a.broken == b.broken;
+}
 
 }  // namespace rocksweep
