@@ -213,7 +213,7 @@ TEST(Outcome, EnergyStopGivesTheSameResultsAsIntegratingToRest) {
                 const CellResult x = integrate_cell(m, on), y = integrate_cell(m, off);
                 ASSERT_EQ(x.outcome, y.outcome) << kind << " " << w << " " << a;
                 EXPECT_NEAR(x.max_rotation, y.max_rotation, 1e-7 * y.max_rotation);
-                EXPECT_NEAR(x.impacts, y.impacts, 1);
+                EXPECT_NEAR(x.impacts, y.impacts, 1) << kind << " " << w << " " << a;
                 EXPECT_EQ(x.broken, y.broken);
                 if (!std::isnan(y.peak_force_ratio)) {
                     EXPECT_NEAR(x.peak_force_ratio, y.peak_force_ratio, 1e-7);
