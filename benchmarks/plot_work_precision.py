@@ -96,8 +96,9 @@ def spectra_panel(ax, rows):
                     ax.annotate(label(method, s), (x, y), textcoords="offset points",
                                 xytext=(4, 4 if k == 0 else -10), fontsize=7, color=COLOURS[method])
                 else:  # the zero row is crowded: vertical labels, above for one scenario, below for the next
+                    gap = 10 if (method, s) in (("events", DEFAULT_STEPS), ("paper", PAPER_DT)) else 7
                     ax.annotate(label(method, s), (x, y), textcoords="offset points",
-                                xytext=(0, 7 if k % 2 == 0 else -7), fontsize=6.5, color=COLOURS[method],
+                                xytext=(0, gap if k % 2 == 0 else -gap), fontsize=6.5, color=COLOURS[method],
                                 rotation=90, ha="center", va="bottom" if k % 2 == 0 else "top")
                 ring_defaults(ax, method, s, x, y)
         for r in rows:

@@ -4,7 +4,7 @@
 # Builds the work_precision target (Release) into build/ if needed, runs it on one thread,
 # and plots. Writes DIR/work_precision_{single,spectra,mismatches}.csv, DIR/work_precision.txt
 # (the printed tables) and DIR/work_precision.png; DIR defaults to benchmarks/results.
-# The default run takes about 2-3 minutes on a 2-core machine; --quick (60 x 60 grid) ~20 s.
+# The default run takes about 2 min 10 s on a quiet 2-core machine; --quick (60 x 60) ~40 s.
 # BUILD_DIR overrides the build directory (default: build).
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
