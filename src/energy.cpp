@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "rocksweep/fastmath.hpp"
+
 namespace rocksweep {
 
 namespace {
@@ -19,11 +21,26 @@ double potential(const CellModel& m, double kappa, double phi) {
     return gravity_potential(m, phi) + spring_potential(m, kappa, phi);
 }
 
+/// V and dV/dphi together, from one sincos of (alpha - phi) and one of phi/4: the Newton
+/// iteration of a swing's peak calls this, and it is the energy decision's main cost.
+void potential_and_slope(const CellModel& m, double kappa, double phi, double& v, double& dv) {
+    if (linear(m)) {
+        v = potential(m, kappa, phi);
+        dv = potential_slope(m, kappa, phi);
+        return;
+    }
+    double sa, ca, sq, cq;
+    fastmath::sincos(m.alpha - phi, sa, ca);
+    fastmath::sincos(0.25 * phi, sq, cq);
+    v = m.p2 * (ca - m.cos_alpha) + 4.0 * kappa * sq * sq;
+    dv = m.p2 * sa + kappa * 2.0 * sq * cq;
+}
+
 }  // namespace
 
 double gravity_potential(const CellModel& m, double phi) {
     if (linear(m)) return m.p2 * (m.alpha * phi - 0.5 * phi * phi);
-    return m.p2 * (std::cos(m.alpha - phi) - std::cos(m.alpha));
+    return m.p2 * (std::cos(m.alpha - phi) - m.cos_alpha);
 }
 
 double spring_potential(const CellModel& m, double kappa, double phi) {
@@ -67,9 +84,10 @@ Swing outward_swing(const CellModel& m, double ke, double kappa_out, double kapp
     double x = (c > 0.0 && a * a > 4.0 * c * ke) ? 2.0 * ke / (a + std::sqrt(a * a - 4.0 * c * ke)) : ke / a;
     if (!(x > lo && x < hi)) x = 0.5 * (lo + hi);
     for (int i = 0; i < 100; ++i) {
-        const double f = potential(m, kappa_out, x) - ke;
+        double v, slope;
+        potential_and_slope(m, kappa_out, x, v, slope);
+        const double f = v - ke;
         (f < 0.0 ? lo : hi) = x;
-        const double slope = potential_slope(m, kappa_out, x);
         double next = slope > 0.0 ? x - f / slope : 0.5 * (lo + hi);
         if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
         const bool converged = std::abs(next - x) <= 4e-16 * x || hi - lo <= 4e-16 * hi;

@@ -5,10 +5,12 @@
 #include <cassert>
 #include <cfloat>
 #include <cmath>
+#include <cstdlib>
 #include <optional>
 #include <stdexcept>
 
 #include "rocksweep/energy.hpp"
+#include "rocksweep/fastmath.hpp"
 
 namespace rocksweep {
 
@@ -28,27 +30,34 @@ namespace {
 
 constexpr double kHalfPi = M_PI / 2;
 
-/// Per-lane coefficients of the right-hand side, constant over one step.
-struct RhsLane {
-    double p2, alpha, kappa, ax_g, ay_g, omega, phase, phase_y;
-    double t_cut;  ///< ground moves at stage times t < t_cut
-    int side;
-    bool sine, linear;
-};
-
 /// Ground acceleration / g at time t: (horizontal, vertical).
 struct Ground {
     double ax = 0.0, ay = 0.0;
 };
-inline Ground ground(const RhsLane& c, double t) {
+
+// ---- The lane arithmetic, branch-free: selects are written as exact arithmetic on 0/1 factors
+// (x * 1 = x, x * 0 + y = y for finite x and y != 0), so that GCC vectorises the lane loop
+// (a ternary between computed values would put the sin/cos under a branch) and a lane gives the
+// same bits whether it runs alone or in a vector. Values that the scalar code set to 0.0 are
+// made exactly +0.0 by adding +0.0. sin/cos: rocksweep::fastmath (odd/even bitwise).
+
+/// Coefficients of one lane as doubles (side +-1, flags 0/1), as the vector loop wants them.
+struct LaneCoef {
+    double p2, alpha, kappa, ax_g, ay_g, omega, phase, phase_y, side, sine, linear, spring;
+};
+
+/// Horizontal (and, if with_y, vertical) ground acceleration / g at time t; `in` is 1 inside
+/// the pulse (t < t_cut), 0 outside, where the result is +0.
+template <bool with_y>
+[[gnu::always_inline]] inline Ground ground(const LaneCoef& c, double t, double in) {
     Ground g;
-    if (t < c.t_cut) {
-        if (c.sine) {
-            g.ax = c.ax_g * std::sin(c.omega * t + c.phase);
-            g.ay = c.ay_g == 0.0 ? 0.0 : c.ay_g * std::sin(c.omega * t + c.phase_y);
-        } else {
-            g.ax = c.ax_g;
-        }
+    // Outside the pulse the argument is 0, whatever t is: the kernel stays in its range.
+    const double sx = fastmath::sin((c.omega * t + c.phase) * in);
+    const double fx = c.sine * sx + (1.0 - c.sine);  // sine: sin(..); constant: 1
+    g.ax = (c.ax_g * fx) * in + 0.0;
+    if constexpr (with_y) {
+        const double sy = fastmath::sin((c.omega * t + c.phase_y) * in);
+        g.ay = ((c.ay_g * sy) * c.sine) * in + 0.0;  // ay_g = 0: +0, as the scalar code
     }
     return g;
 }
@@ -56,41 +65,135 @@ inline Ground ground(const RhsLane& c, double t) {
 /// theta'' on side s (physics.md §3, Eq. 7 and 9 with the restoring factor s):
 /// -p^2 [(1 + ay) sin(s alpha - theta) + ax cos(s alpha - theta)] - s kappa sin(s theta / 2).
 /// Written on s theta rather than |theta| so that a trial step just past theta = 0 stays smooth.
-inline double rhs(const RhsLane& c, const Ground& g, double theta) {
+template <bool with_spring = true>
+[[gnu::always_inline]] inline double rhs(const LaneCoef& c, const Ground& g, double theta) {
     const double s = c.side;
     const double a = s * c.alpha - theta;
-    const double sn = c.linear ? a : std::sin(a);
-    const double cs = c.linear ? 1.0 : std::cos(a);
-    const double spring = c.kappa == 0.0 ? 0.0 : (c.linear ? 0.5 * s * theta : std::sin(0.5 * s * theta));
+    const double nl = 1.0 - c.linear;
+    double sa, ca;
+    fastmath::sincos(a, sa, ca);
+    const double sn = a * c.linear + sa * nl;
+    const double cs = c.linear + ca * nl;
+    double spring = 0.0;  // kappa = 0: +0, as the scalar code
+    if constexpr (with_spring) {
+        const double h = 0.5 * s * theta;
+        const double sp = h * c.linear + fastmath::sin(h) * nl;
+        spring = sp * c.spring + 0.0;
+    }
     return -c.p2 * ((1.0 + g.ay) * sn + g.ax * cs) - s * c.kappa * spring;
 }
 
-/// One classical RK4 step per lane; y = (theta, theta_dot). The same scalar code serves every
-/// lane count, so a cell gives the same bits wherever it sits in a batch.
+/// Per-lane coefficients of the right-hand side, constant over one step (as Lane writes them).
+struct RhsLane {
+    double p2, alpha, kappa, ax_g, ay_g, omega, phase, phase_y;
+    double t_cut;  ///< ground moves at stage times t < t_cut
+    int side;
+    bool sine, linear;
+};
+
+inline LaneCoef coef(const RhsLane& l) {
+    return {l.p2, l.alpha, l.kappa, l.ax_g, l.ay_g, l.omega, l.phase, l.phase_y, static_cast<double>(l.side),
+            l.sine ? 1.0 : 0.0, l.linear ? 1.0 : 0.0, l.kappa == 0.0 ? 0.0 : 1.0};
+}
+
+/// One classical RK4 step per lane; y = (theta, theta_dot). The lane loop is branch-free
+/// and vectorised; every lane computes the same operation sequence as W = 1.
 template <int W>
 struct Batch {
-    std::array<RhsLane, W> c{};
+    std::array<RhsLane, W> c{};  ///< written by Lane::prepare
     std::array<double, W> t0{}, y0{}, v0{}, dt{}, y1{}, v1{}, a0{};
 
+    /// The coefficients as structure of arrays, and the in-pulse factors of the stage times.
+    struct Soa {
+        alignas(64) double p2[W], alpha[W], kappa[W], ax_g[W], ay_g[W], omega[W], phase[W], phase_y[W],
+            side[W], sine[W], linear[W], spring[W], in0[W], inm[W], in1[W];
+    } k{};
+
+    /// Batch-uniform shortcuts, which give the same bits per lane as the full computation:
+    /// no lane in the pulse (every ground value +0), no lane with a vertical component (ay +0),
+    /// no lane with a spring (spring term +0).
     void step() {
+        bool any_in = false, any_y = false, any_k = false;
         for (int i = 0; i < W; ++i) {
-            const RhsLane& l = c[i];
-            const double h = dt[i], t = t0[i], y = y0[i], v = v0[i];
-            // The ground at t, t + h/2 (shared by k2 and k3) and t + h.
-            const Ground g0 = ground(l, t), gm = ground(l, t + 0.5 * h), g1 = ground(l, t + h);
-            // k1 = f(t, y)
-            const double k1y = v, k1v = rhs(l, g0, y);
-            // k2 = f(t + h/2, y + h/2 k1)
-            const double k2y = v + 0.5 * h * k1v, k2v = rhs(l, gm, y + 0.5 * h * k1y);
-            // k3 = f(t + h/2, y + h/2 k2)
-            const double k3y = v + 0.5 * h * k2v, k3v = rhs(l, gm, y + 0.5 * h * k2y);
-            // k4 = f(t + h, y + h k3)
-            const double k4y = v + h * k3v, k4v = rhs(l, g1, y + h * k3y);
-            y1[i] = y + h / 6.0 * (k1y + 2.0 * k2y + 2.0 * k3y + k4y);
-            v1[i] = v + h / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
-            a0[i] = k1v;
+            const LaneCoef l = coef(c[i]);
+            k.p2[i] = l.p2; k.alpha[i] = l.alpha; k.kappa[i] = l.kappa; k.ax_g[i] = l.ax_g;
+            k.ay_g[i] = l.ay_g; k.omega[i] = l.omega; k.phase[i] = l.phase; k.phase_y[i] = l.phase_y;
+            k.side[i] = l.side; k.sine[i] = l.sine; k.linear[i] = l.linear; k.spring[i] = l.spring;
+            const double h = dt[i], t = t0[i];
+            k.in0[i] = t < c[i].t_cut ? 1.0 : 0.0;
+            k.inm[i] = t + 0.5 * h < c[i].t_cut ? 1.0 : 0.0;
+            k.in1[i] = t + h < c[i].t_cut ? 1.0 : 0.0;
+            any_in |= t < c[i].t_cut;  // dt >= 0: the later stage times are not earlier
+            any_y |= c[i].ay_g != 0.0 && c[i].sine;
+            any_k |= c[i].kappa != 0.0;
+        }
+        const int variant = (any_in ? 1 : 0) + (any_in && any_y ? 2 : 0) + (any_k ? 4 : 0);
+        // Same operations either way (AVX2 without FMA, -ffp-contract=off): same bits.
+        if (use_avx2()) {
+            switch (variant) {
+                case 0: return lanes_avx2<false, false, false>(*this);
+                case 1: return lanes_avx2<true, false, false>(*this);
+                case 3: return lanes_avx2<true, true, false>(*this);
+                case 4: return lanes_avx2<false, false, true>(*this);
+                case 5: return lanes_avx2<true, false, true>(*this);
+                default: return lanes_avx2<true, true, true>(*this);
+            }
+        }
+        switch (variant) {
+            case 0: return lanes<false, false, false>(*this);
+            case 1: return lanes<true, false, false>(*this);
+            case 3: return lanes<true, true, false>(*this);
+            case 4: return lanes<false, false, true>(*this);
+            case 5: return lanes<true, false, true>(*this);
+            default: return lanes<true, true, true>(*this);
         }
     }
+
+    static bool use_avx2() {
+#if defined(__x86_64__) || defined(__i386__)
+        static const bool yes = W > 1 && __builtin_cpu_supports("avx2") && !std::getenv("ROCKSWEEP_NO_AVX2");
+        return yes;
+#else
+        return false;
+#endif
+    }
+
+    template <bool pulse, bool with_y, bool spring>
+    [[gnu::always_inline]] static inline void lanes_body(Batch& b) {
+        for (int i = 0; i < W; ++i) {
+            const LaneCoef l{b.k.p2[i], b.k.alpha[i], b.k.kappa[i], b.k.ax_g[i], b.k.ay_g[i], b.k.omega[i],
+                             b.k.phase[i], b.k.phase_y[i], b.k.side[i], b.k.sine[i], b.k.linear[i], b.k.spring[i]};
+            const double h = b.dt[i], t = b.t0[i], y = b.y0[i], v = b.v0[i];
+            // The ground at t, t + h/2 (shared by k2 and k3) and t + h.
+            Ground g0, gm, g1;
+            if constexpr (pulse) {
+                g0 = ground<with_y>(l, t, b.k.in0[i]);
+                gm = ground<with_y>(l, t + 0.5 * h, b.k.inm[i]);
+                g1 = ground<with_y>(l, t + h, b.k.in1[i]);
+            }
+            // k1 = f(t, y)
+            const double k1y = v, k1v = rhs<spring>(l, g0, y);
+            // k2 = f(t + h/2, y + h/2 k1)
+            const double k2y = v + 0.5 * h * k1v, k2v = rhs<spring>(l, gm, y + 0.5 * h * k1y);
+            // k3 = f(t + h/2, y + h/2 k2)
+            const double k3y = v + 0.5 * h * k2v, k3v = rhs<spring>(l, gm, y + 0.5 * h * k2y);
+            // k4 = f(t + h, y + h k3)
+            const double k4y = v + h * k3v, k4v = rhs<spring>(l, g1, y + h * k3y);
+            b.y1[i] = y + h / 6.0 * (k1y + 2.0 * k2y + 2.0 * k3y + k4y);
+            b.v1[i] = v + h / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
+            b.a0[i] = k1v;
+        }
+    }
+    template <bool pulse, bool with_y, bool spring>
+    static void lanes(Batch& b) { lanes_body<pulse, with_y, spring>(b); }
+    // The same loop compiled for AVX2 (no FMA: the bits stay those of the baseline build).
+#if defined(__x86_64__) || defined(__i386__)
+    template <bool pulse, bool with_y, bool spring>
+    __attribute__((target("avx2"))) static void lanes_avx2(Batch& b) { lanes_body<pulse, with_y, spring>(b); }
+#else
+    template <bool pulse, bool with_y, bool spring>
+    static void lanes_avx2(Batch& b) { lanes_body<pulse, with_y, spring>(b); }
+#endif
 };
 
 enum class Event { none, overturn, fracture, impact, turn };
@@ -531,7 +634,7 @@ void run_lanes(std::span<const CellModel> cells, std::span<CellResult> results,
 double rocking_acceleration(const CellModel& m, int side, double kappa, double ax, double ay, double theta) {
     const RhsLane c{m.p2, m.alpha, kappa, ax, ay, 0.0, 0.0, 0.0, INFINITY, side, false,
                     m.equations == Equations::linearised};
-    return rhs(c, Ground{ax, ay}, theta);
+    return rhs(coef(c), Ground{ax, ay}, theta);
 }
 
 void integrate_cells(std::span<const CellModel> cells, std::span<CellResult> results,

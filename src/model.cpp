@@ -39,6 +39,7 @@ CellModel make_cell_model(const Block& block, const Anchorage& a, const Pulse& p
     CellModel m;
     m.p2 = block.p() * block.p();
     m.alpha = block.alpha_rad;
+    m.cos_alpha = std::cos(block.alpha_rad);
     m.e = block.e;
     m.equations = equations;
     m.anchorage = a.kind;

@@ -14,6 +14,7 @@ std::string to_string(Equations e);
 struct CellModel {
     double p2 = 0.0;          ///< p^2 [1/s^2]
     double alpha = 0.0;       ///< [rad]
+    double cos_alpha = 1.0;   ///< cos(alpha), for the potentials
     double e = 1.0;           ///< impact velocity ratio
     Equations equations = Equations::nonlinear;
     AnchorageKind anchorage = AnchorageKind::free;
