@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # 10^6 cells of the S. Matteo free spectrum (omega_p/p in [1,10] x a_p0/(alpha g) in [1,10],
 # 1000 x 1000) on 2 ranks: wall time and agreement with a tight reference (steps per period
-# 192, every cell). Run from the repository root on an idle machine:  benchmarks/million.sh
+# 512, every cell). Run from the repository root on an idle machine:  benchmarks/million.sh
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$here"
@@ -14,7 +14,7 @@ grid=(--config configs/smatteo.toml --anchorages free --omega-ratio-range 1 10 -
 wall() { /usr/bin/time -f "%e" "$@" 2>&1 >/dev/null | tail -1; }
 ref="$out/million_ref.h5"
 if [ ! -f "$ref" ]; then
-  echo "reference (steps per period 192, every cell): $(wall "${mpi[@]}" build/rocksweep sweep "${grid[@]}" --steps-per-period 192 -o "$ref") s"
+  echo "reference (steps per period 512, every cell): $(wall "${mpi[@]}" build/rocksweep sweep "${grid[@]}" --steps-per-period 512 -o "$ref") s"
 fi
 for args in "--refine 32" "--refine 32 --steps-per-period 32" "--refine 64" ""; do
   f="$out/million_try.h5"

@@ -12,13 +12,13 @@ mpi=(mpirun --oversubscribe); [ "$(id -u)" -eq 0 ] && mpi+=(--allow-run-as-root)
 rs=build/rocksweep
 wall() { /usr/bin/time -f "%e" "$@" 2>&1 >/dev/null | tail -1; }
 
-echo "== parallel efficiency: configs/smatteo.toml at 271 x 211 (7 scenarios, 400 358 cells)"
-grid=(--config configs/smatteo.toml --omega-ratio-points 271 --amplitude-ratio-points 211 --quiet --overwrite)
+echo "== parallel efficiency: configs/smatteo.toml at 451 x 331 (7 scenarios, 1 044 967 cells)"
+grid=(--config configs/smatteo.toml --omega-ratio-points 451 --amplitude-ratio-points 331 --quiet --overwrite)
 t1=$(wall "$rs" sweep "${grid[@]}" -o "$out/eff1.h5")
 t2=$(wall "${mpi[@]}" -np 2 "$rs" sweep "${grid[@]}" -o "$out/eff2.h5")
 h5diff --exclude-path /provenance "$out/eff1.h5" "$out/eff2.h5" >/dev/null && same=identical || same=DIFFERENT
 echo "1 rank: $t1 s   2 ranks: $t2 s   efficiency: $(echo "$t1 / (2 * $t2) * 100" | bc -l | cut -c1-5) %   results $same"
-echo "cells/s: 1 rank $(echo "400358 / $t1" | bc) , 2 ranks $(echo "400358 / $t2" | bc)"
+echo "cells/s: 1 rank $(echo "1044967 / $t1" | bc) , 2 ranks $(echo "1044967 / $t2" | bc)"
 
 echo "== dispatch capacity (trivial work, oversubscribed ranks)"
 for n in 2 4 8; do "${mpi[@]}" -np "$n" build/benchmarks/bench_dispatch --chunks 100000 | tail -1; done
