@@ -14,7 +14,7 @@ int run_cli(int argc, char** argv, const MpiSession& mpi);
 struct SweepCommand {
     std::string output;
     bool resume = false, overwrite = false, quiet = false;
-    std::size_t max_chunk = 256;
+    std::size_t max_chunk = 512;
     double checkpoint_s = 5.0;
     std::size_t refine_stride = 0;  ///< 0: every cell; else boundary refinement from this spacing
 };
