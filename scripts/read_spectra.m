@@ -32,7 +32,7 @@ function S = read_spectra(file)
 %   Needs MATLAB R2014a or later (h5read, h5readatt, h5info, matlab.lang.makeValidName).
 
     grids = {'outcome', 'max_rotation', 'impacts', 't_overturn', ...
-             'peak_force_ratio', 'broken', 'done'};
+             'peak_force_ratio', 'broken', 'mu_required', 'pivot_uplift', 'done'};
     reserved = {'file', 'omega_ratio', 'amplitude_ratio', 'attrs', 'provenance', ...
                 'scenario_names'};
 

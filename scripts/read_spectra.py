@@ -23,7 +23,8 @@ OUTCOMES = {
     2: "overturned_without_impact",
     255: "not_converged",
 }
-DATASETS = ("outcome", "max_rotation", "impacts", "t_overturn", "peak_force_ratio", "broken", "done")
+DATASETS = ("outcome", "max_rotation", "impacts", "t_overturn", "peak_force_ratio", "broken", "mu_required",
+            "pivot_uplift", "done")
 
 
 def _value(v):

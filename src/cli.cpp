@@ -75,6 +75,11 @@ void add_model_options(CLI::App& app, Options& o) {
     app.add_option("--vertical-phase", o.pulse.vertical_phase, "Phase of the vertical pulse [rad]")
         ->check(number_in(-2 * M_PI, 2 * M_PI))->capture_default_str()->group(pul);
 
+    app.add_option("--friction-coefficient", o.base.friction,
+                   "Static friction mu_s of the base: report the cells that need more to rock without sliding "
+                   "(0: not checked)")
+        ->check(number_in(0, 100))->capture_default_str()->group(pul);
+
     const char* anc = "Anchorage";
     app.add_option("--strength-ratio", o.anchorage.strength_ratio, "Anchorage strength F_u / (m g)")
         ->check(number_in(0, 1e3, true))->capture_default_str()->group(anc);
@@ -174,6 +179,10 @@ int simulate(const Options& o, const std::string& output, const std::string& con
                   << " p alpha; " << r.impacts_total << " in all)\nmax |theta| / alpha: " << r.max_rotation << "\n";
         if (!std::isnan(r.t_overturn_s)) std::cout << "t_overturn: " << r.t_overturn_s << " s\n";
         if (!std::isnan(r.peak_force_ratio)) std::cout << "peak force / F_u: " << r.peak_force_ratio << "\n";
+        std::cout << "friction needed to rock without sliding: " << r.mu_required;
+        if (o.base.friction > 0.0)
+            std::cout << (r.mu_required > o.base.friction ? " (more than" : " (within") << " mu_s = " << o.base.friction << ")";
+        std::cout << (r.pivot_uplift ? "\nwarning: the pivot's vertical reaction went negative: the block would jump" : "") << "\n";
         std::cout << "wrote " << output << " (" << h.t.size() << " samples to t = " << h.t.back() << " s)\n";
     }
     return 0;

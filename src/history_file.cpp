@@ -67,6 +67,8 @@ void write_h5_contents(const h5::File& f, const History& h, const std::vector<Co
     h5::write_attribute(f, "impacts_total", r.impacts_total);
     h5::write_attribute(f, "t_overturn", r.t_overturn_s);
     h5::write_attribute(f, "max_rotation", r.max_rotation);
+    h5::write_attribute(f, "mu_required", r.mu_required);
+    h5::write_attribute(f, "pivot_uplift", std::int64_t{r.pivot_uplift});
     h5::write_attribute(f, "peak_force_ratio", r.peak_force_ratio);
     h5::write_attribute(f, "broken", r.broken);
     h5::write_attribute(f, "work_sign_convention", work_sign_convention);

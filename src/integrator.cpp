@@ -215,6 +215,8 @@ public:
         CellResult r = r_;
         r.max_rotation = max_phi_ / m_.alpha;
         r.broken = static_cast<std::uint8_t>((broken_[0] ? broken_left : 0) | (broken_[1] ? broken_right : 0));
+        r.mu_required = mu_;
+        r.pivot_uplift = pivot_up_ ? 1 : 0;
         return r;
     }
 
@@ -287,6 +289,8 @@ private:
     int last_moved_ = 0, iterations_ = 0;
     double hi_y_ = 0.0, hi_v_ = 0.0;
     double max_phi_ = 0.0;
+    double mu_ = 0.0;           ///< max |f_x / f_y| so far
+    bool pivot_up_ = false;     ///< f_y < 0 seen
     double w_exc_ = 0.0, w_anch_ = 0.0;
     CellResult r_{};
 
@@ -334,16 +338,68 @@ private:
         if (intact(side_)) r_.peak_force_ratio = std::max(r_.peak_force_ratio, force_coef() * std::tan(0.5 * phi));
     }
 
+    /// Base reactions while rocking (physics.md §6, Eq. 16-18), per unit m g, from the motion of
+    /// the centre of mass about the pivot at x = s b: x = s b - s R sin(alpha - phi),
+    /// y = R cos(alpha - phi), phi = s theta. The working spring pulls the lifted corner down,
+    /// which presses the pivot: f_y gains F_s / (m g). Checked at every accepted state and just
+    /// after each impact. In free rocking the demand peaks as the block settles (phi, phi' -> 0),
+    /// at (sin a cos a / i) / (1 - sin^2 a / i) with i = I0/(mR^2) >= 1, below the tan(alpha)
+    /// that uplift itself needs: the energy decision leaves nothing out. Only |theta| <= alpha
+    /// is checked.
+    void note_reactions() {
+        const double s = side_, phi = side_ * th_;
+        // Past alpha the block is beyond its static stability limit: a fall to the ground needs
+        // ever more friction (f_y -> 0 as theta_dot grows) and says nothing about survival.
+        if (phi > m_.alpha) return;
+        const bool acting = in_pulse();
+        const double ax = acting ? m_.pulse.ax(t_) : 0.0, ay = acting ? m_.pulse.ay(t_) : 0.0;
+        double sa, ca, sh, ch;
+        fastmath::sincos(m_.alpha - phi, sa, ca);
+        fastmath::sincos(0.5 * phi, sh, ch);
+        const bool lin = m_.equations == Equations::linearised;
+        // phi'' = s theta'' (the equation of motion on side s, written on phi)
+        const double phidd = -m_.p2 * ((1.0 + ay) * (lin ? m_.alpha - phi : sa) + s * ax * (lin ? 1.0 : ca)) -
+                             kappa() * (lin ? 0.5 * phi : sh);
+        const double w2 = thd_ * thd_, r_g = m_.radius_m / m_.gravity;
+        const double fx = ax + s * r_g * (ca * phidd + sa * w2);
+        double fy = 1.0 + ay + r_g * (sa * phidd - ca * w2);
+        if (intact(side_))
+            fy += (k_max_ ? m_.k_max_n_m : m_.k_min_n_m) * 4.0 * m_.half_width_m * (sh / ch) / (m_.mass_kg * m_.gravity);
+        if (fy <= 0.0) pivot_up_ = true;
+        else mu_ = std::max(mu_, std::abs(fx) / fy);
+    }
+
+    /// At rest on the moving ground the base carries m (g + ay) and m ax: the friction needed is
+    /// max |ax| / (1 + ay) over [t0, t1] of the pulse, sampled like the uplift search (and at
+    /// the peaks of |ax|, where it is largest without vertical motion).
+    void note_rest_demand(double t0, double t1) {
+        t1 = std::min(t1, t_pulse_end_);
+        if (!(t1 >= t0)) return;
+        auto demand = [&](double t) { return std::abs(m_.pulse.ax(t)) / (1.0 + m_.pulse.ay(t)); };
+        mu_ = std::max({mu_, demand(t0), demand(t1 < t_pulse_end_ ? t1 : std::nextafter(t1, t0))});
+        if (m_.pulse.kind != PulseKind::sine) return;
+        const double w = m_.pulse.omega, ph = m_.pulse.phase, period = 2.0 * M_PI / w;
+        for (double k = std::ceil(((w * t0 + ph) - M_PI / 2) / M_PI);; k += 1.0) {
+            const double tpk = ((M_PI / 2 + k * M_PI) - ph) / w;
+            if (tpk >= t1) break;
+            if (tpk > t0) mu_ = std::max(mu_, demand(tpk));
+        }
+        if (m_.pulse.ay_g != 0.0)
+            for (double t = t0; t < t1; t += period / 512.0) mu_ = std::max(mu_, demand(t));
+    }
+
     /// From rest: wait for the ground to lift a corner (Eq. 1), or finish safe.
     void leave_rest() {
         const double tu = in_pulse() ? next_uplift(t_, std::min(t_pulse_end_, set_.t_end_s)) : INFINITY;
         if (!std::isfinite(tu)) {
             const double t_stop = std::min(std::max(t_, t_pulse_end_), set_.t_end_s);
+            note_rest_demand(t_, t_stop);
             observe_rest(t_stop);
             t_ = t_stop;
             finish(Outcome::safe);
             return;
         }
+        note_rest_demand(t_, tu);
         observe_rest(tu);
         t_ = tu;
         th_ = thd_ = 0.0;
@@ -484,6 +540,7 @@ private:
         t_ = t1;
         th_ = y1;
         thd_ = v1;
+        note_reactions();  // just before the event: an impact's approach speed is the larger
         switch (e) {
             case Event::overturn: return overturn();
             case Event::fracture:
@@ -520,6 +577,7 @@ private:
         thd_ *= m_.e;
         side_ = -side_;
         update_stiffness();
+        note_reactions();
         if (!in_pulse() && set_.energy_stop) {
             const FreeFate f = free_fate(m_, side_, std::abs(thd_), !broken_[0], !broken_[1]);
             if (f.decided) {
@@ -542,6 +600,7 @@ private:
         t_ = t1;
         th_ = y1;
         thd_ = v1;
+        note_reactions();
         if (side_ * y1 >= kHalfPi) return overturn();
         if (intact(side_) && side_ * y1 >= break_angle()) broken_[side_ > 0 ? 0 : 1] = true;
         if (side_ * y1 < 0.0) {

@@ -74,6 +74,7 @@ SweepSpec make_sweep_spec(const Options& o) {
     spec.phase = o.pulse.phase;
     spec.vertical_g = o.pulse.vertical_g;
     spec.vertical_phase = o.pulse.vertical_phase;
+    spec.friction = o.base.friction;
     spec.omega_ratio = make_axis("omega-ratio", o.grid.omega_range, o.grid.omega_points);
     spec.amplitude_ratio = make_axis("amplitude-ratio", o.grid.amplitude_range, o.grid.amplitude_points);
     const Block& b = spec.block;

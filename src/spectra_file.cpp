@@ -76,6 +76,8 @@ void check_columns(const SweepSpec& spec, const SweepResults& r) {
         {"t_overturn", r.t_overturn.size()},
         {"peak_force_ratio", r.peak_force_ratio.size()},
         {"broken", r.broken.size()},
+        {"mu_required", r.mu_required.size()},
+        {"pivot_uplift", r.pivot_uplift.size()},
         {"done", r.done.size()},
     };
     for (const auto& [name, size] : sizes)
@@ -133,6 +135,7 @@ void write_root(const h5::File& f, const SweepSpec& spec, const SweepResults& r)
     h5::write_attribute(f, "format_version", format_version);
     for (const NamedNumber& n : root_numbers(spec)) h5::write_attribute(f, n.name, n.value);
     h5::write_attribute(f, "equations", to_string(spec.equations));
+    h5::write_attribute(f, "friction_coefficient", spec.friction);  // 0: not checked
     const auto n_done = static_cast<std::int64_t>(
         std::count_if(r.done.begin(), r.done.end(), [](std::uint8_t d) { return d != 0; }));
     const auto n_cells = static_cast<std::int64_t>(spec.cell_count());
@@ -197,6 +200,23 @@ void write_scenario(const h5::Group& spectra, std::size_t index, const SweepSpec
         h5::write_attribute(ds, "comment",
                             "bit 1: left spring (works for theta > 0); bit 2: right spring "
                             "(works for theta < 0)");
+    }
+    {
+        const h5::Dataset ds = write_grid(g, "mu_required", r.mu_required, index, spec, axes);
+        h5::write_attribute(ds, "units", "1");
+        h5::write_attribute(ds, "long_name", "friction coefficient needed to rock without sliding, max |f_x / f_y|");
+        h5::write_attribute(ds, "comment",
+                            "base reactions from the motion of the centre of mass (Eq. 16-18); where it exceeds the "
+                            "interface's static friction coefficient the block would slide and this cell's "
+                            "pure-rocking result does not hold");
+    }
+    {
+        const h5::Dataset ds = write_grid(g, "pivot_uplift", r.pivot_uplift, index, spec, axes);
+        const std::uint8_t values[] = {0, 1};
+        h5::write_attribute(ds, "long_name", "vertical reaction at the pivot went negative");
+        h5::write_attribute(ds, "flag_values", std::span<const std::uint8_t>(values));
+        h5::write_attribute(ds, "flag_meanings", "pivot_stays_down pivot_lifts");
+        h5::write_attribute(ds, "comment", "1: the block would jump; the rocking model does not hold there");
     }
     {
         const h5::Dataset ds = write_grid(g, "done", r.done, index, spec, axes);
@@ -313,6 +333,8 @@ SweepResults read_contents(const std::string& path, const h5::File& f, const Swe
         read_grid(path, g, "t_overturn", r.t_overturn, i, spec);
         read_grid(path, g, "peak_force_ratio", r.peak_force_ratio, i, spec);
         read_grid(path, g, "broken", r.broken, i, spec);
+        read_grid(path, g, "mu_required", r.mu_required, i, spec);
+        read_grid(path, g, "pivot_uplift", r.pivot_uplift, i, spec);
         read_grid(path, g, "done", r.done, i, spec);
     }
     return r;

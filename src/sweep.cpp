@@ -44,6 +44,8 @@ void SweepResults::resize(std::size_t n) {
     t_overturn.assign(n, NAN);
     peak_force_ratio.assign(n, NAN);
     broken.assign(n, 0);
+    mu_required.assign(n, NAN);
+    pivot_uplift.assign(n, 0);
     done.assign(n, 0);
 }
 
@@ -54,6 +56,8 @@ void SweepResults::store(std::size_t i, const CellResult& r) {
     t_overturn[i] = r.t_overturn_s;
     peak_force_ratio[i] = r.peak_force_ratio;
     broken[i] = r.broken;
+    mu_required[i] = r.mu_required;
+    pivot_uplift[i] = r.pivot_uplift;
     done[i] = 1;
 }
 

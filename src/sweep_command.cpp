@@ -217,6 +217,17 @@ int run_sweep(const Options& opts, const SweepCommand& cmd, const std::string& c
             << "; rerun with --resume to continue\n";
         return 128 + sig;
     }
+    if (spec.friction > 0.0 && !cmd.quiet) {
+        std::size_t slide = 0, jump = 0;
+        for (std::size_t i = 0; i < total; ++i) {
+            slide += results.done[i] == cell_computed && results.mu_required[i] > spec.friction;
+            jump += results.pivot_uplift[i];
+        }
+        log << slide << " cells need more friction than mu_s = " << spec.friction
+            << " (their pure-rocking results assume no sliding; see mu_required)";
+        if (jump) log << ", " << jump << " would lift the pivot (pivot_uplift)";
+        log << "\n";
+    }
     if (!cmd.quiet) log << "wrote " << cmd.output << "\n";
     return 0;
 }

@@ -74,6 +74,8 @@ SweepResults known_results(const SweepSpec& spec, bool all_done = false) {
         r.t_overturn[i] = (r.outcome[i] == 1 || r.outcome[i] == 2) ? 1.5 + std::ldexp(1.0, -40) * i : NAN;
         r.peak_force_ratio[i] = free ? NAN : 0.01 * static_cast<double>(i);
         r.broken[i] = static_cast<std::uint8_t>(i % 4);
+        r.mu_required[i] = 0.2 + 0.001 * static_cast<double>(i);
+        r.pivot_uplift[i] = static_cast<std::uint8_t>(i % 7 == 3);
         r.done[i] = (all_done || i % 5 != 0) ? 1 : 0;
     }
     return r;
@@ -106,6 +108,8 @@ void expect_same_results(const SweepResults& a, const SweepResults& b) {
     EXPECT_EQ(bits(a.t_overturn), bits(b.t_overturn));
     EXPECT_EQ(bits(a.peak_force_ratio), bits(b.peak_force_ratio));
     EXPECT_EQ(a.broken, b.broken);
+    EXPECT_EQ(bits(a.mu_required), bits(b.mu_required));
+    EXPECT_EQ(a.pivot_uplift, b.pivot_uplift);
     EXPECT_EQ(a.done, b.done);
 }
 
@@ -169,7 +173,7 @@ TEST(SpectraFile, LayoutAxesScalesAndAttributes) {
         EXPECT_EQ(h5::read_string_attribute(amp, "long_name"), "a_p0 / (alpha g)");
         EXPECT_EQ(h5::read_string_attribute(amp, "units"), "1");
         for (const char* name : {"outcome", "max_rotation", "impacts", "t_overturn",
-                                 "peak_force_ratio", "broken", "done"}) {
+                                 "peak_force_ratio", "broken", "mu_required", "pivot_uplift", "done"}) {
             SCOPED_TRACE(name);
             const h5::Dataset ds = f.open_dataset(std::string("spectra/free/") + name);
             // Shape [n_amp, n_omega], amplitude on dimension 0.

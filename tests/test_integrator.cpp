@@ -215,6 +215,7 @@ TEST(Outcome, EnergyStopGivesTheSameResultsAsIntegratingToRest) {
                 EXPECT_NEAR(x.max_rotation, y.max_rotation, 1e-7 * y.max_rotation);
                 EXPECT_NEAR(x.impacts, y.impacts, 1) << kind << " " << w << " " << a;
                 EXPECT_EQ(x.broken, y.broken);
+                EXPECT_EQ(x.mu_required, y.mu_required);  // the free tail never needs more (physics.md)
                 if (!std::isnan(y.peak_force_ratio)) {
                     EXPECT_NEAR(x.peak_force_ratio, y.peak_force_ratio, 1e-7);
                 }
@@ -264,4 +265,47 @@ TEST(Batch, EveryLaneOfAMixedBatchEqualsTheScalarPath) {
                 ASSERT_TRUE(bitwise_equal(batch[i], scalar[i])) << "cell " << i << " lanes " << lanes;
         }
     }
+}
+
+TEST(Reactions, AtRestTheFrictionNeededIsTheGroundAcceleration) {
+    // Below the uplift threshold the block moves with the ground: mu = max |ax| / g.
+    const Pulse p = sine(3.0, 0.9);
+    const CellResult r = integrate_cell(make_cell_model(kBlock, free_anchorage(), p), {});
+    EXPECT_EQ(r.max_rotation, 0.0);
+    EXPECT_DOUBLE_EQ(r.mu_required, p.ax_g);
+    EXPECT_EQ(r.pivot_uplift, 0);
+}
+
+TEST(Reactions, RockingNeedsAtLeastTanAlphaAndMatchesTheMotionOfTheCentreOfMass) {
+    const Pulse p = sine(6.0, 4.0);
+    const CellModel m = make_cell_model(kBlock, free_anchorage(), p);
+    const History h = sample_history(m, {}, 1e-4, 4.0);
+    const CellResult& r = h.result;
+    EXPECT_GE(r.mu_required, std::tan(kBlock.alpha_rad) * (1 - 1e-12));
+    EXPECT_EQ(r.pivot_uplift, 0);
+    // f_x / (m g) and f_y / (m g) from second differences of the sampled centre of mass.
+    const double R = kBlock.radius_m, b = kBlock.half_width_m(), g = kBlock.gravity, dt = 1e-4;
+    auto cm = [&](std::size_t i, double& x, double& y) {
+        const double s = h.theta[i] > 0 ? 1.0 : -1.0, phi = std::abs(h.theta[i]);
+        x = s * b - s * R * std::sin(kBlock.alpha_rad - phi);
+        y = R * std::cos(kBlock.alpha_rad - phi);
+    };
+    double worst = 0.0;
+    std::size_t used = 0;
+    for (std::size_t i = 1; i + 1 < h.t.size(); ++i) {
+        // only where the pivot stays the same across the stencil
+        if (!(h.theta[i - 1] * h.theta[i] > 0 && h.theta[i] * h.theta[i + 1] > 0)) continue;
+        double x0, y0, x1, y1, x2, y2;
+        cm(i - 1, x0, y0);
+        cm(i, x1, y1);
+        cm(i + 1, x2, y2);
+        const double ax = h.ground_acc[i] / g, ay = 0.0;
+        const double fx = ax + (x0 - 2 * x1 + x2) / (dt * dt) / g;
+        const double fy = 1.0 + ay + (y0 - 2 * y1 + y2) / (dt * dt) / g;
+        worst = std::max(worst, std::abs(fx) / fy);
+        ++used;
+    }
+    EXPECT_GT(used, 10000u);
+    EXPECT_LE(worst, r.mu_required * (1 + 2e-3));  // sampled demand never exceeds the reported one
+    EXPECT_GE(worst, r.mu_required * (1 - 2e-2));  // and comes close to it
 }

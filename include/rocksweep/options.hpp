@@ -22,6 +22,10 @@ struct PulseOptions {
     double phase = 0.0, vertical_g = 0.0, vertical_phase = 0.0;
 };
 
+struct BaseOptions {
+    double friction = 0.0;  ///< static friction coefficient mu_s; 0: not checked
+};
+
 struct AnchorageOptions {
     double strength_ratio = 0.4;  ///< F_u / (m g)
     std::string break_rule = "angle";
@@ -55,6 +59,7 @@ struct SingleOptions {
 struct Options {
     BlockOptions block;
     PulseOptions pulse;
+    BaseOptions base;
     AnchorageOptions anchorage;
     GridOptions grid;
     NumericsOptions numerics;

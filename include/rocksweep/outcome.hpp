@@ -23,11 +23,13 @@ struct CellResult {
     double max_rotation = 0.0;      ///< max |theta| / alpha
     double t_overturn_s = 0.0;      ///< time |theta| reached pi/2; NaN if it did not
     double peak_force_ratio = 0.0;  ///< max anchorage force / F_u; NaN without anchorage
+    double mu_required = 0.0;       ///< max |f_x / f_y| at the base: friction needed to rock without sliding
     std::int32_t impacts = 0;       ///< impacts with approach speed above the threshold
     std::int32_t impacts_total = 0; ///< every impact integrated, settling ones included
     std::int64_t steps = 0;         ///< RK4 steps taken (trial steps of event searches included)
     Outcome outcome = Outcome::safe;
     std::uint8_t broken = 0;        ///< broken_left | broken_right
+    std::uint8_t pivot_uplift = 0;  ///< 1 if the pivot's vertical reaction went negative (model invalid)
 };
 
 /// True if every field holds the same bits (NaN included): what "identical results" means.
@@ -35,7 +37,8 @@ inline bool bitwise_equal(const CellResult& a, const CellResult& b) {
     auto bits = [](double x) { return std::bit_cast<std::uint64_t>(x); };
     return bits(a.max_rotation) == bits(b.max_rotation) && bits(a.t_overturn_s) == bits(b.t_overturn_s) &&
            bits(a.peak_force_ratio) == bits(b.peak_force_ratio) && a.impacts == b.impacts &&
-           a.impacts_total == b.impacts_total && a.steps == b.steps && a.outcome == b.outcome && a.broken == b.broken;
+           a.impacts_total == b.impacts_total && a.steps == b.steps && a.outcome == b.outcome && a.broken == b.broken &&
+           bits(a.mu_required) == bits(b.mu_required) && a.pivot_uplift == b.pivot_uplift;
 }
 
 }  // namespace rocksweep

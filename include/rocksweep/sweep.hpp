@@ -36,6 +36,7 @@ struct SweepSpec {
     double phase = 0.0;              ///< psi [rad]
     double vertical_g = 0.0;         ///< a_v0 / g
     double vertical_phase = 0.0;     ///< psi_v [rad]
+    double friction = 0.0;           ///< mu_s of the base, to flag cells that would slide; 0: unchecked
     Axis omega_ratio;                ///< omega_p / p
     Axis amplitude_ratio;            ///< a_p0 / (alpha g)
     std::vector<Scenario> scenarios;
@@ -54,6 +55,8 @@ struct SweepResults {
     std::vector<double> t_overturn;
     std::vector<double> peak_force_ratio;
     std::vector<std::uint8_t> broken;
+    std::vector<double> mu_required;
+    std::vector<std::uint8_t> pivot_uplift;
     std::vector<std::uint8_t> done;  ///< 0 pending, 1 computed, 2 outcome inferred (refine.hpp)
 
     void resize(std::size_t n);
