@@ -283,7 +283,7 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
         }
         return run_sweep(opts, sweep_cmd, config_text, mpi);
     } catch (const InputError& e) {
-        err << "rocksweep: error: --" << e.what() << "\n";
+        err << "rocksweep: error: " << cli_message(e) << "\n";
         return 2;
     }
 }

@@ -11,6 +11,11 @@ std::string format_number(double x) {
     return buf;
 }
 
+std::string cli_message(const InputError& e) {
+    const bool option = e.field().find(' ') == std::string::npos;
+    return (option ? "--" : "") + std::string(e.what());
+}
+
 void require_open(const std::string& field, double x, double lo, double hi, const std::string& allowed) {
     if (!(x > lo && x < hi)) throw InputError(field, format_number(x), allowed);
 }

@@ -108,12 +108,12 @@ int run_sweep(const Options& opts, const SweepCommand& cmd, const std::string& c
             start = prepare_output(spec, cmd, log);
         } catch (const InputError& e) {
             verdict = 2;
-            why = e.what();
+            why = cli_message(e);
         }
     }
     if (mpi.size() > 1) MPI_Bcast(&verdict, 1, MPI_INT, 0, mpi.comm());
     if (verdict != 0) {
-        log << "rocksweep: error: --" << why << "\n";
+        log << "rocksweep: error: " << why << "\n";
         return verdict;
     }
 

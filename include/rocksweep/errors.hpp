@@ -16,6 +16,10 @@ private:
     std::string field_;
 };
 
+/// The message as a command line reads it: "--field = value is invalid: ..." when the field is
+/// an option's name, the plain message otherwise (e.g. "spectra file = ...").
+std::string cli_message(const InputError& e);
+
 /// Throws InputError unless lo < x < hi (open bounds) — NaN is always rejected.
 void require_open(const std::string& field, double x, double lo, double hi, const std::string& allowed);
 /// Throws InputError unless lo <= x <= hi — NaN is always rejected.
