@@ -2,23 +2,16 @@
 # 10^6 cells of the S. Matteo free spectrum (omega_p/p in [1,10] x a_p0/(alpha g) in [1,10],
 # 1000 x 1000) on 2 ranks: wall time and agreement with a tight reference (steps per period
 # 512, every cell). Run from the repository root on an idle machine:  benchmarks/million.sh
-set -euo pipefail
-here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-cd "$here"
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build -j 2 --target rocksweep >/dev/null
-out=benchmarks/results; mkdir -p "$out"
-mpi=(mpirun --oversubscribe -np 2); [ "$(id -u)" -eq 0 ] && mpi+=(--allow-run-as-root)
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh" rocksweep
 grid=(--config configs/smatteo.toml --anchorages free --omega-ratio-range 1 10 --amplitude-ratio-range 1 10
       --omega-ratio-points 1000 --amplitude-ratio-points 1000 --quiet --overwrite)
-wall() { /usr/bin/time -f "%e" "$@" 2>&1 >/dev/null | tail -1; }
 ref="$out/million_ref.h5"
 if [ ! -f "$ref" ]; then
-  echo "reference (steps per period 512, every cell): $(wall "${mpi[@]}" build/rocksweep sweep "${grid[@]}" --steps-per-period 512 -o "$ref") s"
+  echo "reference (steps per period 512, every cell): $(wall "${mpi[@]}" -np 2 build/rocksweep sweep "${grid[@]}" --steps-per-period 512 -o "$ref") s"
 fi
 for args in "--refine 32" "--refine 32 --steps-per-period 32" "--refine 64" ""; do
   f="$out/million_try.h5"
-  t=$(wall "${mpi[@]}" build/rocksweep sweep "${grid[@]}" $args -o "$f")
+  t=$(wall "${mpi[@]}" -np 2 build/rocksweep sweep "${grid[@]}" $args -o "$f")
   echo "== default accuracy ${args:-(every cell)}: $t s wall on 2 ranks"
   /usr/bin/python3 benchmarks/compare_outcomes.py "$ref" "$f" | tail -2
 done

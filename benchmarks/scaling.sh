@@ -2,15 +2,8 @@
 # Distributed-sweep figures: parallel efficiency at 1 and 2 ranks, the master's dispatch
 # capacity, memory per rank for a 10^6-cell sweep. Run from the repository root on an
 # otherwise idle machine:  benchmarks/scaling.sh
-set -euo pipefail
-here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-cd "$here"
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build -j 2 --target rocksweep bench_dispatch >/dev/null
-out=benchmarks/results; mkdir -p "$out"
-mpi=(mpirun --oversubscribe); [ "$(id -u)" -eq 0 ] && mpi+=(--allow-run-as-root)
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh" rocksweep bench_dispatch
 rs=build/rocksweep
-wall() { /usr/bin/time -f "%e" "$@" 2>&1 >/dev/null | tail -1; }
 
 echo "== parallel efficiency: configs/smatteo.toml at 451 x 331 (7 scenarios, 1 044 967 cells)"
 grid=(--config configs/smatteo.toml --omega-ratio-points 451 --amplitude-ratio-points 331 --quiet --overwrite)

@@ -2,15 +2,9 @@
 # What each skip saves on the default S. Matteo sweep (configs/smatteo.toml, 7 scenarios,
 # 267 337 cells), one process, and whether the results stay the same.
 # Run from the repository root on an idle machine:  benchmarks/skips.sh
-set -euo pipefail
-here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-cd "$here"
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build -j 2 --target rocksweep >/dev/null
-out=benchmarks/results; mkdir -p "$out"
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh" rocksweep
 rs=build/rocksweep
 base=(sweep --config configs/smatteo.toml --quiet --overwrite)
-wall() { /usr/bin/time -f "%e" "$@" 2>&1 >/dev/null | tail -1; }
 echo "default (all skips):              $(wall "$rs" "${base[@]}" -o "$out/skip_default.h5") s"
 echo "without the energy decision:      $(wall "$rs" "${base[@]}" --no-energy-stop -o "$out/skip_noenergy.h5") s"
 /usr/bin/python3 benchmarks/compare_outcomes.py "$out/skip_noenergy.h5" "$out/skip_default.h5" | tail -1

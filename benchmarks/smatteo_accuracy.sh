@@ -3,18 +3,11 @@
 # cells per second, and agreement with the same sweep at a tight setting (steps per period
 # 512). Also the mode-2 boundary across anchorages (the paper's Conclusions ii).
 # Run from the repository root on an idle machine:  benchmarks/smatteo_accuracy.sh
-set -euo pipefail
-here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-cd "$here"
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build -j 2 --target rocksweep >/dev/null
-out=benchmarks/results; mkdir -p "$out"
-mpi=(mpirun --oversubscribe -np 2); [ "$(id -u)" -eq 0 ] && mpi+=(--allow-run-as-root)
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh" rocksweep
 base=(build/rocksweep sweep --config configs/smatteo.toml --quiet --overwrite)
-wall() { /usr/bin/time -f "%e" "$@" 2>&1 >/dev/null | tail -1; }
-t=$(wall "${mpi[@]}" "${base[@]}" -o "$out/smatteo_default.h5")
+t=$(wall "${mpi[@]}" -np 2 "${base[@]}" -o "$out/smatteo_default.h5")
 echo "default sweep, 267 337 cells on 2 ranks: $t s wall, $(echo "267337 / $t" | bc) cells/s (mpirun start-up and file included)"
-t=$(wall "${mpi[@]}" "${base[@]}" --steps-per-period 512 -o "$out/smatteo_tight.h5")
+t=$(wall "${mpi[@]}" -np 2 "${base[@]}" --steps-per-period 512 -o "$out/smatteo_tight.h5")
 echo "tight sweep (steps per period 512): $t s"
 /usr/bin/python3 benchmarks/compare_outcomes.py "$out/smatteo_tight.h5" "$out/smatteo_default.h5"
 /usr/bin/python3 - "$out/smatteo_tight.h5" "$out/smatteo_default.h5" <<'PY'
