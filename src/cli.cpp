@@ -250,6 +250,8 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
 
     CLI::App* info = app.add_subcommand("info", "Derived values: alpha, p, e, R, I0, K and F_u per scenario");
     info->fallthrough();
+    for (CLI::App* sub : {sweep, sim, info})
+        sub->footer("Block, pulse, anchorage, grid and numerics options (and --config): rocksweep --help");
 
     try {
         app.parse(argc, argv);
