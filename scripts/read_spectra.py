@@ -23,7 +23,7 @@ OUTCOMES = {
     2: "overturned_without_impact",
     255: "not_converged",
 }
-DATASETS = ("outcome", "max_rotation", "impacts", "t_overturn", "peak_force_ratio", "broken", "mu_required",
+DATASETS = ("outcome", "max_rotation", "impacts", "impacts_total", "t_overturn", "peak_force_ratio", "broken", "mu_required",
             "pivot_uplift", "done")
 
 

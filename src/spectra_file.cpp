@@ -76,6 +76,7 @@ void check_columns(const SweepSpec& spec, const SweepResults& r) {
         {"t_overturn", r.t_overturn.size()},
         {"peak_force_ratio", r.peak_force_ratio.size()},
         {"broken", r.broken.size()},
+        {"impacts_total", r.impacts_total.size()},
         {"mu_required", r.mu_required.size()},
         {"pivot_uplift", r.pivot_uplift.size()},
         {"done", r.done.size()},
@@ -177,6 +178,14 @@ void write_scenario(const h5::Group& spectra, std::size_t index, const SweepSpec
         const h5::Dataset ds = write_grid(g, "impacts", r.impacts, index, spec, axes);
         h5::write_attribute(ds, "units", "1");
         h5::write_attribute(ds, "long_name", "impacts with approach speed above the threshold");
+    }
+    {
+        const h5::Dataset ds = write_grid(g, "impacts_total", r.impacts_total, index, spec, axes);
+        h5::write_attribute(ds, "units", "1");
+        h5::write_attribute(ds, "long_name", "impacts, the settling one included");
+        h5::write_attribute(ds, "comment",
+                            "the first impact slower than impact_threshold p alpha puts the block at rest "
+                            "(the rest would pile up in finite time); it counts here, not in impacts");
     }
     {
         const h5::Dataset ds = write_grid(g, "t_overturn", r.t_overturn, index, spec, axes);
@@ -333,6 +342,7 @@ SweepResults read_contents(const std::string& path, const h5::File& f, const Swe
         read_grid(path, g, "t_overturn", r.t_overturn, i, spec);
         read_grid(path, g, "peak_force_ratio", r.peak_force_ratio, i, spec);
         read_grid(path, g, "broken", r.broken, i, spec);
+        read_grid(path, g, "impacts_total", r.impacts_total, i, spec);
         read_grid(path, g, "mu_required", r.mu_required, i, spec);
         read_grid(path, g, "pivot_uplift", r.pivot_uplift, i, spec);
         read_grid(path, g, "done", r.done, i, spec);

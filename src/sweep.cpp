@@ -41,6 +41,7 @@ void SweepResults::resize(std::size_t n) {
     outcome.assign(n, 0);
     max_rotation.assign(n, NAN);
     impacts.assign(n, 0);
+    impacts_total.assign(n, 0);
     t_overturn.assign(n, NAN);
     peak_force_ratio.assign(n, NAN);
     broken.assign(n, 0);
@@ -53,6 +54,7 @@ void SweepResults::store(std::size_t i, const CellResult& r) {
     outcome[i] = static_cast<std::uint8_t>(r.outcome);
     max_rotation[i] = r.max_rotation;
     impacts[i] = r.impacts;
+    impacts_total[i] = r.impacts_total;
     t_overturn[i] = r.t_overturn_s;
     peak_force_ratio[i] = r.peak_force_ratio;
     broken[i] = r.broken;

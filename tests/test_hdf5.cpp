@@ -71,6 +71,7 @@ SweepResults known_results(const SweepSpec& spec, bool all_done = false) {
         r.outcome[i] = codes[i % 4];
         r.max_rotation[i] = 1.0 / 3.0 + 0.1 * static_cast<double>(i);
         r.impacts[i] = static_cast<std::int32_t>(7 * i) - 5;
+        r.impacts_total[i] = static_cast<std::int32_t>(7 * i) + 1;
         r.t_overturn[i] = (r.outcome[i] == 1 || r.outcome[i] == 2) ? 1.5 + std::ldexp(1.0, -40) * i : NAN;
         r.peak_force_ratio[i] = free ? NAN : 0.01 * static_cast<double>(i);
         r.broken[i] = static_cast<std::uint8_t>(i % 4);
@@ -105,6 +106,7 @@ void expect_same_results(const SweepResults& a, const SweepResults& b) {
     EXPECT_EQ(a.outcome, b.outcome);
     EXPECT_EQ(bits(a.max_rotation), bits(b.max_rotation));
     EXPECT_EQ(a.impacts, b.impacts);
+    EXPECT_EQ(a.impacts_total, b.impacts_total);
     EXPECT_EQ(bits(a.t_overturn), bits(b.t_overturn));
     EXPECT_EQ(bits(a.peak_force_ratio), bits(b.peak_force_ratio));
     EXPECT_EQ(a.broken, b.broken);
@@ -172,7 +174,7 @@ TEST(SpectraFile, LayoutAxesScalesAndAttributes) {
         EXPECT_EQ(h5::read_string_attribute(omega, "long_name"), "omega_p / p");
         EXPECT_EQ(h5::read_string_attribute(amp, "long_name"), "a_p0 / (alpha g)");
         EXPECT_EQ(h5::read_string_attribute(amp, "units"), "1");
-        for (const char* name : {"outcome", "max_rotation", "impacts", "t_overturn",
+        for (const char* name : {"outcome", "max_rotation", "impacts", "impacts_total", "t_overturn",
                                  "peak_force_ratio", "broken", "mu_required", "pivot_uplift", "done"}) {
             SCOPED_TRACE(name);
             const h5::Dataset ds = f.open_dataset(std::string("spectra/free/") + name);

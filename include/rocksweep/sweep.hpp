@@ -52,6 +52,7 @@ struct SweepResults {
     std::vector<std::uint8_t> outcome;
     std::vector<double> max_rotation;
     std::vector<std::int32_t> impacts;
+    std::vector<std::int32_t> impacts_total;
     std::vector<double> t_overturn;
     std::vector<double> peak_force_ratio;
     std::vector<std::uint8_t> broken;
