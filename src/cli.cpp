@@ -166,7 +166,8 @@ int simulate(const Options& o, const std::string& output, const std::string& con
         write_history_csv(output, h);
     } else {
         write_history_h5(output, h,
-                         {{"anchorage", o.single.anchorage}, {"pulse", o.single.pulse}, {"method", to_string(settings.method)},
+                         {{"anchorage", o.single.anchorage}, {"pulse", o.single.record.empty() ? o.single.pulse : "record"},
+                          {"record", o.single.record}, {"method", to_string(settings.method)},
                           {"equations", to_string(m.equations)}, {"config", config_text}, {"version", ROCKSWEEP_VERSION}},
                          {{"omega_ratio", o.single.omega_ratio}, {"amplitude_ratio", o.single.amplitude_ratio},
                           {"theta_f_ratio", o.single.theta_f_ratio}, {"kmin_ratio", o.single.kmin_ratio},
@@ -246,6 +247,11 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
     sim->add_option("--stiffness", so.stiffness, "Constant anchorage: K [N/m] instead of --theta-f-ratio")->check(positive());
     sim->add_option("--t-end", so.t_end_s, "Record length [s] (default: pulse + 10 rocking periods 2 pi / p)")->check(positive());
     sim->add_option("--output-dt", so.output_dt_s, "Output interval [s]")->check(number_in(1e-6, 100))->capture_default_str();
+    sim->add_option("--record", so.record, "A recorded ground motion instead of a pulse: text file, time [s] and acceleration per line")
+        ->check(CLI::ExistingFile);
+    sim->add_option("--record-units", so.record_units, "Unit of the record's acceleration column: g or m/s^2 (required with --record)")
+        ->check(CLI::IsMember({"g", "m/s^2"}));
+    sim->add_option("--record-scale", so.record_scale, "Factor applied to the record")->check(number_in(-100, 100))->capture_default_str();
     sim->add_flag("-q,--quiet", sim_quiet, "Print nothing on success");
 
     CLI::App* info = app.add_subcommand("info", "Derived values: alpha, p, e, R, I0, K and F_u per scenario");

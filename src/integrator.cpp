@@ -89,6 +89,7 @@ struct RhsLane {
     double t_cut;  ///< ground moves at stage times t < t_cut
     int side;
     bool sine, linear;
+    const Pulse* record = nullptr;  ///< a recorded ground motion: read, not vectorised
 };
 
 inline LaneCoef coef(const RhsLane& l) {
@@ -113,7 +114,7 @@ struct Batch {
     /// no lane in the pulse (every ground value +0), no lane with a vertical component (ay +0),
     /// no lane with a spring (spring term +0).
     void step() {
-        bool any_in = false, any_y = false, any_k = false;
+        bool any_in = false, any_y = false, any_k = false, any_record = false;
         for (int i = 0; i < W; ++i) {
             const LaneCoef l = coef(c[i]);
             k.p2[i] = l.p2; k.alpha[i] = l.alpha; k.kappa[i] = l.kappa; k.ax_g[i] = l.ax_g;
@@ -126,7 +127,9 @@ struct Batch {
             any_in |= t < c[i].t_cut;  // dt >= 0: the later stage times are not earlier
             any_y |= c[i].ay_g != 0.0 && c[i].sine;
             any_k |= c[i].kappa != 0.0;
+            any_record |= c[i].record != nullptr;
         }
+        if (any_record) return lanes<true, true, true, true>(*this);
         const int variant = (any_in ? 1 : 0) + (any_in && any_y ? 2 : 0) + (any_k ? 4 : 0);
         // Same operations either way (AVX2 without FMA, -ffp-contract=off): same bits.
         if (use_avx2()) {
@@ -158,7 +161,7 @@ struct Batch {
 #endif
     }
 
-    template <bool pulse, bool with_y, bool spring>
+    template <bool pulse, bool with_y, bool spring, bool recorded = false>
     [[gnu::always_inline]] static inline void lanes_body(Batch& b) {
         for (int i = 0; i < W; ++i) {
             const LaneCoef l{b.k.p2[i], b.k.alpha[i], b.k.kappa[i], b.k.ax_g[i], b.k.ay_g[i], b.k.omega[i],
@@ -170,6 +173,13 @@ struct Batch {
                 g0 = ground<with_y>(l, t, b.k.in0[i]);
                 gm = ground<with_y>(l, t + 0.5 * h, b.k.inm[i]);
                 g1 = ground<with_y>(l, t + h, b.k.in1[i]);
+            }
+            if constexpr (recorded) {
+                if (const Pulse* r = b.c[i].record) {
+                    g0 = Ground{b.k.in0[i] != 0.0 ? r->ax(t) : 0.0, 0.0};
+                    gm = Ground{b.k.inm[i] != 0.0 ? r->ax(t + 0.5 * h) : 0.0, 0.0};
+                    g1 = Ground{b.k.in1[i] != 0.0 ? r->ax(t + h) : 0.0, 0.0};
+                }
             }
             // k1 = f(t, y)
             const double k1y = v, k1v = rhs<spring>(l, g0, y);
@@ -184,8 +194,8 @@ struct Batch {
             b.a0[i] = k1v;
         }
     }
-    template <bool pulse, bool with_y, bool spring>
-    static void lanes(Batch& b) { lanes_body<pulse, with_y, spring>(b); }
+    template <bool pulse, bool with_y, bool spring, bool recorded = false>
+    static void lanes(Batch& b) { lanes_body<pulse, with_y, spring, recorded>(b); }
     // The same loop compiled for AVX2 (no FMA: the bits stay those of the baseline build).
 #if defined(__x86_64__) || defined(__i386__)
     template <bool pulse, bool with_y, bool spring>
@@ -240,6 +250,8 @@ public:
         c.phase = m_.pulse.phase;
         c.phase_y = m_.pulse.phase_y;
         c.sine = m_.pulse.kind == PulseKind::sine;
+        c.record = m_.pulse.kind == PulseKind::record ? &m_.pulse : nullptr;
+        if (c.record) c.ax_g = 0.0;
         c.linear = m_.equations == Equations::linearised;
         c.side = side_;
         b.t0[i] = t_;
@@ -310,6 +322,9 @@ private:
         if (in_pulse()) {
             b = std::min(b, t_pulse_end_);
             if (m_.anchorage == AnchorageKind::adaptive) b = std::min(b, m_.pulse.next_ax_zero(t_));
+            // A record is linear between samples: its kinks are steps' ends, so the error
+            // stays that of a smooth right-hand side.
+            if (m_.pulse.kind == PulseKind::record) b = std::min(b, m_.pulse.next_sample(t_));
         }
         return b;
     }
@@ -377,6 +392,10 @@ private:
         if (!(t1 >= t0)) return;
         auto demand = [&](double t) { return std::abs(m_.pulse.ax(t)) / (1.0 + m_.pulse.ay(t)); };
         mu_ = std::max({mu_, demand(t0), demand(t1 < t_pulse_end_ ? t1 : std::nextafter(t1, t0))});
+        if (m_.pulse.kind == PulseKind::record) {  // linear between samples: the samples bound it
+            for (double t = m_.pulse.next_sample(t0); t < t1; t = m_.pulse.next_sample(t)) mu_ = std::max(mu_, demand(t));
+            return;
+        }
         if (m_.pulse.kind != PulseKind::sine) return;
         const double w = m_.pulse.omega, ph = m_.pulse.phase, period = 2.0 * M_PI / w;
         for (double k = std::ceil(((w * t0 + ph) - M_PI / 2) / M_PI);; k += 1.0) {
@@ -407,11 +426,28 @@ private:
         k_max_ = true;  // at uplift ax theta < 0: the adaptive law's K_max
     }
 
+    /// The uplift instant in (lo, hi], hi uplifting and lo not, to machine precision.
+    double bisect_uplift(double lo, double hi) const {
+        for (int i = 0; i < 200 && hi - lo > 4 * DBL_EPSILON * hi; ++i) {
+            const double mid = 0.5 * (lo + hi);
+            (m_.uplifts(mid) ? hi : lo) = mid;
+        }
+        return hi;
+    }
+
     /// First time in [t, t_stop) at which the block uplifts, or +inf.
     double next_uplift(double t, double t_stop) const {
         if (m_.uplifts(t)) return t;
         if (m_.never_uplifts()) return INFINITY;  // decided without integrating
-        if (m_.pulse.kind != PulseKind::sine) return INFINITY;  // constant ground: no change
+        if (m_.pulse.kind == PulseKind::constant) return INFINITY;  // constant ground: no change
+        if (m_.pulse.kind == PulseKind::record) {
+            // |ax| is largest at a segment's ends: the first sample that uplifts brackets it.
+            for (double prev = t, next = m_.pulse.next_sample(t); prev < t_stop; prev = next, next = m_.pulse.next_sample(next)) {
+                next = std::min(next, t_stop);
+                if (next < t_stop && m_.uplifts(next)) return bisect_uplift(prev, next);
+            }
+            return INFINITY;
+        }
         const double period = 2.0 * M_PI / m_.pulse.omega;
         const double dt = period / 512.0;
         double prev = t;
@@ -422,14 +458,7 @@ private:
             const double k = std::ceil(((w * prev + ph) - M_PI / 2) / M_PI);
             const double tpk = ((M_PI / 2 + k * M_PI) - ph) / w;
             if (tpk > prev && tpk < next && m_.uplifts(tpk)) next = tpk;
-            if (next < t_stop && m_.uplifts(next)) {
-                double lo = prev, hi = next;
-                for (int i = 0; i < 200 && hi - lo > 4 * DBL_EPSILON * hi; ++i) {
-                    const double mid = 0.5 * (lo + hi);
-                    (m_.uplifts(mid) ? hi : lo) = mid;
-                }
-                return hi;
-            }
+            if (next < t_stop && m_.uplifts(next)) return bisect_uplift(prev, next);
             prev = next;
         }
         return INFINITY;

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "rocksweep/errors.hpp"
+#include "rocksweep/record.hpp"
 
 namespace rocksweep {
 
@@ -118,7 +119,11 @@ CellModel make_single_cell(const Options& o) {
     const SingleOptions& s = o.single;
     Pulse pulse;
     pulse.ax_g = s.amplitude_ratio * b.alpha_rad;
-    if (s.pulse == "sine") {
+    if (!s.record.empty()) {
+        if (s.record_units.empty())
+            throw InputError("record-units", "(missing)", "the unit of the record's second column, g or m/s^2");
+        pulse = read_record(s.record, s.record_units, s.record_scale, b.gravity);
+    } else if (s.pulse == "sine") {
         pulse.kind = PulseKind::sine;
         pulse.omega = s.omega_ratio * b.p();
         pulse.phase = o.pulse.phase;

@@ -54,6 +54,8 @@ struct SingleOptions {
     double omega_ratio = 4.0, amplitude_ratio = 2.7, duration_s = 0.0;
     double theta_f_ratio = 1.0, kmin_ratio = 0.5, stiffness = 0.0;
     double t_end_s = 0.0, output_dt_s = 0.01;
+    std::string record, record_units;  ///< a recorded ground motion instead of a pulse
+    double record_scale = 1.0;
 };
 
 struct Options {
