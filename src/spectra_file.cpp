@@ -255,6 +255,11 @@ void write_provenance(const h5::File& f, const Provenance& prov) {
 void write_contents(const h5::File& f, const SweepSpec& spec, const SweepResults& r,
                     const Provenance& prov) {
     write_root(f, spec, r);
+    // The numerics that shape the results are part of the result; they stay in /provenance too.
+    h5::write_attribute(f, "method", prov.method);
+    h5::write_attribute(f, "steps_per_period", prov.steps_per_period);
+    h5::write_attribute(f, "paper_dt_s", prov.paper_dt_s);
+    h5::write_attribute(f, "rocksweep_version", prov.version);
     const Axes axes = write_axes(f, spec);
     const h5::Group spectra = f.create_group("spectra");
     for (std::size_t i = 0; i < spec.scenarios.size(); ++i) write_scenario(spectra, i, spec, r, axes);
