@@ -153,6 +153,17 @@ Axes write_axes(const h5::File& f, const SweepSpec& spec) {
     return axes;
 }
 
+/// A measured quantity: the grid with its units, long_name and, where there is one, comment.
+template <typename T>
+void write_measure(const h5::Group& g, const char* name, const std::vector<T>& column, std::size_t index,
+                   const SweepSpec& spec, const Axes& axes, const char* units, const char* long_name,
+                   const char* comment = nullptr) {
+    const h5::Dataset ds = write_grid(g, name, column, index, spec, axes);
+    h5::write_attribute(ds, "units", units);
+    h5::write_attribute(ds, "long_name", long_name);
+    if (comment) h5::write_attribute(ds, "comment", comment);
+}
+
 void write_scenario(const h5::Group& spectra, std::size_t index, const SweepSpec& spec,
                     const SweepResults& r, const Axes& axes) {
     const Scenario& s = spec.scenarios[index];
@@ -169,37 +180,20 @@ void write_scenario(const h5::Group& spectra, std::size_t index, const SweepSpec
         h5::write_attribute(ds, "flag_meanings",
                             "safe overturned_with_impact overturned_without_impact not_converged");
     }
-    {
-        const h5::Dataset ds = write_grid(g, "max_rotation", r.max_rotation, index, spec, axes);
-        h5::write_attribute(ds, "units", "1");
-        h5::write_attribute(ds, "long_name", "max |theta| / alpha");
-    }
-    {
-        const h5::Dataset ds = write_grid(g, "impacts", r.impacts, index, spec, axes);
-        h5::write_attribute(ds, "units", "1");
-        h5::write_attribute(ds, "long_name", "impacts with approach speed above the threshold");
-    }
-    {
-        const h5::Dataset ds = write_grid(g, "impacts_total", r.impacts_total, index, spec, axes);
-        h5::write_attribute(ds, "units", "1");
-        h5::write_attribute(ds, "long_name", "impacts, the settling one included");
-        h5::write_attribute(ds, "comment",
-                            "the first impact slower than impact_threshold p alpha puts the block at rest "
-                            "(the rest would pile up in finite time); it counts here, not in impacts");
-    }
-    {
-        const h5::Dataset ds = write_grid(g, "t_overturn", r.t_overturn, index, spec, axes);
-        h5::write_attribute(ds, "units", "s");
-        h5::write_attribute(ds, "long_name", "time at which |theta| reached pi/2");
-        h5::write_attribute(ds, "comment", "NaN when the block did not overturn");
-    }
-    {
-        const h5::Dataset ds =
-            write_grid(g, "peak_force_ratio", r.peak_force_ratio, index, spec, axes);
-        h5::write_attribute(ds, "units", "1");
-        h5::write_attribute(ds, "long_name", "peak anchorage force / F_u");
-        h5::write_attribute(ds, "comment", "NaN for a free-standing block");
-    }
+    write_measure(g, "max_rotation", r.max_rotation, index, spec, axes, "1",
+                  "max |theta| / alpha");
+    write_measure(g, "impacts", r.impacts, index, spec, axes, "1",
+                  "impacts with approach speed above the threshold");
+    write_measure(g, "impacts_total", r.impacts_total, index, spec, axes, "1",
+                  "impacts, the settling one included",
+                  "the first impact slower than impact_threshold p alpha puts the block at rest "
+                  "(the rest would pile up in finite time); it counts here, not in impacts");
+    write_measure(g, "t_overturn", r.t_overturn, index, spec, axes, "s",
+                  "time at which |theta| reached pi/2",
+                  "NaN when the block did not overturn");
+    write_measure(g, "peak_force_ratio", r.peak_force_ratio, index, spec, axes, "1",
+                  "peak anchorage force / F_u",
+                  "NaN for a free-standing block");
     {
         const h5::Dataset ds = write_grid(g, "broken", r.broken, index, spec, axes);
         const std::uint8_t masks[] = {broken_left, broken_right};
@@ -210,15 +204,11 @@ void write_scenario(const h5::Group& spectra, std::size_t index, const SweepSpec
                             "bit 1: left spring (works for theta > 0); bit 2: right spring "
                             "(works for theta < 0)");
     }
-    {
-        const h5::Dataset ds = write_grid(g, "mu_required", r.mu_required, index, spec, axes);
-        h5::write_attribute(ds, "units", "1");
-        h5::write_attribute(ds, "long_name", "friction coefficient needed to rock without sliding, max |f_x / f_y|");
-        h5::write_attribute(ds, "comment",
-                            "base reactions from the motion of the centre of mass (Eq. 16-18); where it exceeds the "
-                            "interface's static friction coefficient the block would slide and this cell's "
-                            "pure-rocking result does not hold");
-    }
+    write_measure(g, "mu_required", r.mu_required, index, spec, axes, "1",
+                  "friction coefficient needed to rock without sliding, max |f_x / f_y|",
+                  "base reactions from the motion of the centre of mass (Eq. 16-18); where it exceeds the "
+                  "interface's static friction coefficient the block would slide and this cell's "
+                  "pure-rocking result does not hold");
     {
         const h5::Dataset ds = write_grid(g, "pivot_uplift", r.pivot_uplift, index, spec, axes);
         const std::uint8_t values[] = {0, 1};
