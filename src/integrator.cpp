@@ -699,7 +699,13 @@ void run_lanes(std::span<const CellModel> cells, std::span<CellResult> results,
         return false;
     };
     for (int i = 0; i < W; ++i) live += refill(i) ? 1 : 0;
+    // A stop request is honoured within ~256 batch steps, even inside one slow cell.
+    std::uint32_t until_poll = 256;
     while (live > 0) {
+        if (settings.stop_requested && --until_poll == 0) {
+            until_poll = 256;
+            if (settings.stop_requested()) throw Interrupted();
+        }
         for (int i = 0; i < W; ++i)
             if (!lane[i]) b.dt[i] = 0.0;  // idle lane: a harmless zero step
         b.step();

@@ -3,6 +3,7 @@
 #include <cstddef>
 #include <functional>
 #include <span>
+#include <stdexcept>
 #include <string>
 
 #include "rocksweep/model.hpp"
@@ -24,6 +25,16 @@ struct IntegratorSettings {
     std::int64_t max_steps = 2'000'000;  ///< a cell that needs more is reported not converged
     bool energy_stop = true;  ///< after the pulse, decide a safe block by energy
     double t_end_s = INFINITY;  ///< stop here even if undecided (histories); INFINITY: until decided
+    /// Polled every few hundred batch steps (well under a millisecond of work); when it returns
+    /// true the integration throws Interrupted. Does not shape results.
+    std::function<bool()> stop_requested;
+};
+
+/// Thrown by integrate_cells / integrate_cell when IntegratorSettings::stop_requested asks it
+/// to stop: the cells of that call have no results.
+class Interrupted : public std::runtime_error {
+public:
+    Interrupted() : std::runtime_error("integration interrupted by a stop request") {}
 };
 
 /// One accepted step or event, for histories.
