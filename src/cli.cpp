@@ -1,7 +1,5 @@
 #include "rocksweep/cli.hpp"
 
-#include <unistd.h>
-
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdio>
@@ -11,8 +9,6 @@
 #include <sstream>
 
 #include "rocksweep/errors.hpp"
-#include "rocksweep/history.hpp"
-#include "rocksweep/history_file.hpp"
 
 #ifndef ROCKSWEEP_VERSION
 #define ROCKSWEEP_VERSION "unknown"
@@ -154,53 +150,7 @@ void print_info(const Options& o, std::ostream& out) {
     }
 }
 
-int simulate(const Options& o, const std::string& output, const std::string& config_text, bool quiet) {
-    const CellModel m = make_single_cell(o);
-    const IntegratorSettings settings = make_settings(o.numerics);
-    const std::string ext = std::filesystem::path(output).extension().string();
-    if (ext != ".h5" && ext != ".csv") throw InputError("output", output, "a file name ending in .h5 or .csv");
-    require_writable("output", output);
-    const double t_end = o.single.t_end_s > 0.0 ? o.single.t_end_s : default_t_end(m);
-    const History h = sample_history(m, settings, o.single.output_dt_s, t_end);
-    if (ext == ".csv") {
-        write_history_csv(output, h);
-    } else {
-        write_history_h5(output, h,
-                         {{"anchorage", o.single.anchorage}, {"pulse", o.single.record.empty() ? o.single.pulse : "record"},
-                          {"record", o.single.record}, {"method", to_string(settings.method)},
-                          {"equations", to_string(m.equations)}, {"config", config_text}, {"version", ROCKSWEEP_VERSION}},
-                         {{"omega_ratio", o.single.omega_ratio}, {"amplitude_ratio", o.single.amplitude_ratio},
-                          {"theta_f_ratio", o.single.theta_f_ratio}, {"kmin_ratio", o.single.kmin_ratio},
-                          {"p_rad_s", m.p()}, {"alpha_rad", m.alpha}, {"e", m.e},
-                          {"steps_per_period", settings.steps_per_period}, {"output_dt_s", o.single.output_dt_s}});
-    }
-    if (!quiet) {
-        const CellResult& r = h.result;
-        std::cout << "outcome: " << to_string(r.outcome) << "\nimpacts: " << r.impacts << " (above " << o.numerics.impact_threshold
-                  << " p alpha; " << r.impacts_total << " in all)\nmax |theta| / alpha: " << r.max_rotation << "\n";
-        if (!std::isnan(r.t_overturn_s)) std::cout << "t_overturn: " << r.t_overturn_s << " s\n";
-        if (!std::isnan(r.peak_force_ratio)) std::cout << "peak force / F_u: " << r.peak_force_ratio << "\n";
-        std::cout << "friction needed to rock without sliding: " << r.mu_required;
-        if (o.base.friction > 0.0)
-            std::cout << (r.mu_required > o.base.friction ? " (more than" : " (within") << " mu_s = " << o.base.friction << ")";
-        std::cout << (r.pivot_uplift ? "\nwarning: the pivot's vertical reaction went negative: the block would jump" : "") << "\n";
-        std::cout << "wrote " << output << " (" << h.t.size() << " samples to t = " << h.t.back() << " s)\n";
-    }
-    return 0;
-}
-
 }  // namespace
-
-void require_writable(const std::string& field, const std::string& path) {
-    namespace fs = std::filesystem;
-    if (path.empty()) throw InputError(field, "\"\"", "a file name");
-    const fs::path p(path);
-    const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
-    std::error_code ec;
-    if (!fs::is_directory(dir, ec)) throw InputError(field, path, "a file in an existing directory (" + dir.string() + " does not exist)");
-    if (::access(dir.c_str(), W_OK) != 0) throw InputError(field, path, "a file in a writable directory (" + dir.string() + " is not writable)");
-    if (fs::is_directory(p, ec)) throw InputError(field, path, "a file name, not a directory");
-}
 
 int run_cli(int argc, char** argv, const MpiSession& mpi) {
     RootStream err(mpi);
@@ -287,7 +237,7 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
         }
         if (*sim) {
             if (!mpi.is_root()) return 0;  // one history: one rank is enough
-            return simulate(opts, sim_output, config_text, sim_quiet);
+            return run_simulate(opts, SimulateCommand{sim_output, sim_quiet}, config_text);
         }
         return run_sweep(opts, sweep_cmd, config_text, mpi);
     } catch (const InputError& e) {

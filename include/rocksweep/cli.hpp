@@ -23,6 +23,15 @@ struct SweepCommand {
 int run_sweep(const Options& opts, const SweepCommand& cmd, const std::string& config_text,
               const MpiSession& mpi);
 
+struct SimulateCommand {
+    std::string output;
+    bool quiet = false;
+};
+
+/// One history on this rank (call it on one rank only); writes `cmd.output`. Returns the exit
+/// status.
+int run_simulate(const Options& opts, const SimulateCommand& cmd, const std::string& config_text);
+
 /// Throws InputError unless `path` can be created: its directory exists and is writable.
 void require_writable(const std::string& field, const std::string& path);
 
