@@ -3,7 +3,7 @@
 # build/. Sourced by run.sh and test.sh.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-packages=(build-essential cmake libopenmpi-dev openmpi-bin libhdf5-dev hdf5-tools libeigen3-dev
+packages=(build-essential cmake libopenmpi-dev openmpi-bin libhdf5-dev hdf5-tools
           libcli11-dev libgtest-dev python3-h5py python3-numpy python3-matplotlib)
 missing=()
 for p in "${packages[@]}"; do
