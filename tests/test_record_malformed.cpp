@@ -100,6 +100,9 @@ TEST(RecordMalformed, SamplingIntervalOutsideTheSaneRange) {
     EXPECT_EQ(message(s), "--record-dt = 1000000 is invalid: a sampling interval of 1000000 s" + allowed);
     s.dt_s = 0.01;
     EXPECT_EQ(message(s), "accepted");
+    RecordSource timed = time_accel(write_file("timed.dat", "0 0\n0.02 1\n"));
+    timed.dt_s = 0.01;  // a given dt must agree with the time column
+    EXPECT_EQ(message(timed), "--record-dt = 0.01 is invalid: the step of " + timed.path + "'s time column, 0.02 s (or not given)");
 }
 
 TEST(RecordMalformed, AbsurdAmplitudesAreRefusedWithTheirLine) {
