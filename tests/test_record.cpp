@@ -5,10 +5,10 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <string>
 #include <vector>
 
+#include "record_test_files.hpp"
 #include "rocksweep/anchorage.hpp"
 #include "rocksweep/errors.hpp"
 #include "rocksweep/history.hpp"
@@ -17,17 +17,13 @@
 #include "rocksweep/record.hpp"
 
 using namespace rocksweep;
+using rocksweep::test_files::write_file;
 
 namespace {
 
 const Block kBlock = rectangular_block(0.30, 1.36, 3361.0);
 const std::string kRecords = ROCKSWEEP_RECORDS_DIR;
 
-std::string write_file(const std::string& name, const std::string& text) {
-    const std::string path = ::testing::TempDir() + name;
-    std::ofstream(path) << text;
-    return path;
-}
 
 }  // namespace
 

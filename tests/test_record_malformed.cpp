@@ -4,21 +4,17 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <fstream>
 #include <string>
 
+#include "record_test_files.hpp"
 #include "rocksweep/errors.hpp"
 #include "rocksweep/record.hpp"
 
 using namespace rocksweep;
+using rocksweep::test_files::write_file;
 
 namespace {
 
-std::string write_file(const std::string& name, const std::string& text) {
-    const std::string path = ::testing::TempDir() + "malformed_" + name;
-    std::ofstream(path) << text;
-    return path;
-}
 
 RecordSource time_accel(const std::string& path, const std::string& units = "g") {
     RecordSource s;
@@ -82,7 +78,7 @@ TEST(RecordMalformed, EmptyOrSingleSampleFilesAndUnreadablePaths) {
     EXPECT_EQ(message(time_accel(e)), "--record = " + e + " is invalid: at least two samples (found 0)");
     const std::string one = write_file("one.dat", "# header only\n0 0.1\n");
     EXPECT_EQ(message(time_accel(one)), "--record = " + one + " is invalid: at least two samples (found 1)");
-    const std::string none = ::testing::TempDir() + "no_such_record.dat";
+    const std::string none = rocksweep::test_files::temp_dir() + "no_such_record.dat";
     EXPECT_EQ(message(time_accel(none)), "--record = " + none + " is invalid: a readable record file (it cannot be opened)");
 }
 

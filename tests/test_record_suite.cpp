@@ -3,23 +3,19 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 #include <string>
 
+#include "record_test_files.hpp"
 #include "rocksweep/errors.hpp"
 #include "rocksweep/record_suite.hpp"
 
 using namespace rocksweep;
+using rocksweep::test_files::write_file;
 
 namespace {
 
-const std::string kDir = ::testing::TempDir() + "suite_test/";
+const std::string kDir = rocksweep::test_files::temp_dir();
 
-std::string write_file(const std::string& name, const std::string& text) {
-    std::filesystem::create_directories(kDir);
-    std::ofstream(kDir + name) << text;
-    return kDir + name;
-}
 
 // The message the command line would print, or "accepted".
 std::string message(const std::string& suite_text) {
