@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <optional>
 
 #include "record_text.hpp"
 #include "rocksweep/errors.hpp"
@@ -66,7 +67,8 @@ void check_dt(const std::string& field, const std::string& where, double dt_s) {
     if (!(dt_s >= record_dt_min_s && dt_s <= record_dt_max_s))
         throw InputError(field, where,
                          "a sampling interval of " + format_number(dt_s) + " s is outside " + format_number(record_dt_min_s) +
-                             " s <= dt <= " + format_number(record_dt_max_s) + " s (strong-motion records are sampled at 1 Hz to 100 kHz)");
+                             " s <= dt <= " + format_number(record_dt_max_s) +
+                             " s (strong-motion records are sampled at 1 Hz to 100 kHz)");
 }
 
 // Samples in the file's unit -> fraction of standard gravity, refusing what no ground does.
@@ -92,11 +94,18 @@ int acceleration_column(const std::string& field, RecordFormat f, int column) {
     return chosen;
 }
 
-// One component of a text file: its samples and its grid (from the time column or `given_dt`).
+// One component as read: its samples in the file's unit and its time grid.
 struct Component {
     Samples accel;
     TimeGrid grid;
 };
+
+struct Components {
+    Component horizontal;
+    std::optional<Component> vertical;
+};
+
+const std::string vertical_field = "record-vertical";
 
 std::vector<Component> read_text(const std::string& field, const std::string& path, const RecordSource& s,
                                  const std::vector<int>& columns) {
@@ -127,9 +136,51 @@ Component read_at2_component(const std::string& field, const std::string& path, 
         throw InputError("record-units", units, "the unit " + path + " states, " + a.units + " (or none: an .AT2 gives its own)");
     units = a.units;
     if (s.dt_s != 0.0 && s.dt_s != a.dt_s)
-        throw InputError("record-dt", format_number(s.dt_s), "the DT " + path + " states, " + format_number(a.dt_s) + " s (or none)");
+        throw InputError("record-dt", format_number(s.dt_s),
+                         "the DT " + path + " states, " + format_number(a.dt_s) + " s (or none)");
     check_dt(field, at(path, 4), a.dt_s);
     return {std::move(a.samples), {a.dt_s, false}};
+}
+
+// An .AT2 and, optionally, a second .AT2 for the vertical; the unit comes from the header.
+Components read_at2_components(const RecordSource& s, Record& r) {
+    if (s.column != 0)
+        throw InputError("record-column", std::to_string(s.column), "none for an .AT2 file (it has one component)");
+    Components c{read_at2_component("record", s.path, s, r.units), std::nullopt};
+    if (s.vertical) {
+        if (s.vertical->path.empty() || s.vertical->column != 0)
+            throw InputError(vertical_field, s.vertical->path.empty() ? "(a column)" : s.vertical->path,
+                             "a second .AT2 file, without a column");
+        r.vertical_path = s.vertical->path;
+        c.vertical = read_at2_component(vertical_field, s.vertical->path, s, r.units);
+    }
+    return c;
+}
+
+// Columns of a text file; the vertical from another column of it or from a second file.
+Components read_text_components(const RecordSource& s, Record& r) {
+    units_to_g("record-units", s.units);  // refuse a missing unit before reading anything
+    if (s.format == RecordFormat::accel_only) {
+        if (s.dt_s == 0.0)
+            throw InputError("record-dt", "(missing)",
+                             "the sampling interval [s] of " + s.path + " (an accel_only file has no time column)");
+        check_dt("record-dt", format_number(s.dt_s), s.dt_s);
+    }
+    r.column = acceleration_column("record-column", s.format, s.column);
+    const bool same_file = s.vertical && s.vertical->path.empty();
+    if (same_file && s.vertical->column == 0)
+        throw InputError("record-vertical-column", "(missing)", "the column of " + s.path + " holding the vertical component");
+    if (s.vertical) r.vertical_column = acceleration_column("record-vertical-column", s.format, s.vertical->column);
+    std::vector<Component> read =
+        read_text("record", s.path, s, same_file ? std::vector<int>{r.column, r.vertical_column} : std::vector<int>{r.column});
+    if (s.format == RecordFormat::time_accel) check_dt("record", s.path, read[0].grid.dt_s);
+    Components c{std::move(read[0]), std::nullopt};
+    if (same_file)
+        c.vertical = std::move(read[1]);
+    else if (s.vertical)
+        c.vertical = std::move(read_text(vertical_field, s.vertical->path, s, {r.vertical_column})[0]);
+    if (s.vertical) r.vertical_path = same_file ? s.path : s.vertical->path;
+    return c;
 }
 
 }  // namespace
@@ -143,9 +194,12 @@ RecordFormat parse_record_format(const std::string& field, const std::string& te
 
 std::string to_string(RecordFormat f) {
     switch (f) {
-        case RecordFormat::time_accel: return "time_accel";
-        case RecordFormat::accel_only: return "accel_only";
-        case RecordFormat::at2: return "at2";
+        case RecordFormat::time_accel:
+            return "time_accel";
+        case RecordFormat::accel_only:
+            return "accel_only";
+        case RecordFormat::at2:
+            return "at2";
     }
     return "?";
 }
@@ -159,63 +213,35 @@ double units_to_g(const std::string& field, const std::string& units) {
 }
 
 Record read_record(const RecordSource& s) {
-    if (!std::isfinite(s.scale) || s.scale == 0.0) throw InputError("record-scale", format_number(s.scale), "a finite, non-zero factor");
+    if (!std::isfinite(s.scale) || s.scale == 0.0)
+        throw InputError("record-scale", format_number(s.scale), "a finite, non-zero factor");
     if (s.skip_lines < 0) throw InputError("record-skip-lines", std::to_string(s.skip_lines), "0 or more");
     Record r;
     r.path = s.path;
     r.format = s.format;
     r.units = s.units;
     r.scale = s.scale;
-    const std::string vfield = "record-vertical";
-    Component h, v;
-    bool has_v = s.vertical.has_value();
-    if (s.format == RecordFormat::at2) {
-        if (s.column != 0) throw InputError("record-column", std::to_string(s.column), "none for an .AT2 file (it has one component)");
-        h = read_at2_component("record", s.path, s, r.units);
-        if (has_v) {
-            if (s.vertical->path.empty() || s.vertical->column != 0)
-                throw InputError(vfield, s.vertical->path.empty() ? "(a column)" : s.vertical->path, "a second .AT2 file, without a column");
-            r.vertical_path = s.vertical->path;
-            v = read_at2_component(vfield, s.vertical->path, s, r.units);
-        }
-    } else {
-        units_to_g("record-units", s.units);  // refuse a missing unit before reading anything
-        if (s.format == RecordFormat::accel_only) {
-            if (s.dt_s == 0.0) throw InputError("record-dt", "(missing)", "the sampling interval [s] of " + s.path + " (an accel_only file has no time column)");
-            check_dt("record-dt", format_number(s.dt_s), s.dt_s);
-        }
-        r.column = acceleration_column("record-column", s.format, s.column);
-        const bool same_file = has_v && s.vertical->path.empty();
-        if (has_v) r.vertical_column = acceleration_column("record-vertical-column", s.format, s.vertical->column);
-        if (same_file && s.vertical->column == 0)
-            throw InputError("record-vertical-column", "(missing)", "the column of " + s.path + " holding the vertical component");
-        std::vector<int> columns{r.column};
-        if (same_file) columns.push_back(r.vertical_column);
-        std::vector<Component> c = read_text("record", s.path, s, columns);
-        h = std::move(c[0]);
-        if (same_file) v = std::move(c[1]);
-        else if (has_v) v = std::move(read_text(vfield, s.vertical->path, s, {r.vertical_column})[0]);
-        if (has_v) r.vertical_path = same_file ? s.path : s.vertical->path;
-        if (s.format == RecordFormat::time_accel) check_dt("record", s.path, h.grid.dt_s);
-    }
+    const Components c = s.format == RecordFormat::at2 ? read_at2_components(s, r) : read_text_components(s, r);
+    const Component& h = c.horizontal;
     const double factor = units_to_g("record-units", r.units) * s.scale;
     r.dt_s = h.grid.dt_s;
     r.npts = h.accel.values.size();
     r.zero_prepended = h.grid.starts_at_dt;
     r.ax_g = to_g("record", s.path, h.accel, factor, r.units, s.scale);
-    if (has_v) {
-        if (std::abs(v.grid.dt_s - h.grid.dt_s) > time_tolerance * h.grid.dt_s || v.grid.starts_at_dt != h.grid.starts_at_dt)
-            throw InputError(vfield, r.vertical_path,
-                             "a component on the horizontal's grid (dt " + format_number(h.grid.dt_s) + " s from t = " +
-                                 format_number(h.grid.starts_at_dt ? h.grid.dt_s : 0.0) + " s)");
-        r.ay_g = to_g(vfield, r.vertical_path, v.accel, factor, r.units, s.scale);
+    if (c.vertical) {
+        const TimeGrid& vg = c.vertical->grid;
+        if (std::abs(vg.dt_s - h.grid.dt_s) > time_tolerance * h.grid.dt_s || vg.starts_at_dt != h.grid.starts_at_dt)
+            throw InputError(vertical_field, r.vertical_path,
+                             "a component on the horizontal's grid (dt " + format_number(h.grid.dt_s) +
+                                 " s from t = " + format_number(h.grid.starts_at_dt ? h.grid.dt_s : 0.0) + " s)");
+        r.ay_g = to_g(vertical_field, r.vertical_path, c.vertical->accel, factor, r.units, s.scale);
     }
     if (r.zero_prepended) {
         r.ax_g.insert(r.ax_g.begin(), 0.0);
-        if (has_v) r.ay_g.insert(r.ay_g.begin(), 0.0);
+        if (c.vertical) r.ay_g.insert(r.ay_g.begin(), 0.0);
     }
     // Components of one record may end a few samples apart: the ground is at rest after either ends.
-    if (has_v) {
+    if (c.vertical) {
         const std::size_t n = std::max(r.ax_g.size(), r.ay_g.size());
         r.ax_g.resize(n, 0.0);
         r.ay_g.resize(n, 0.0);

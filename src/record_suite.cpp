@@ -45,7 +45,9 @@ public:
     }
 
 private:
-    InputError error(const std::string& what) const { return InputError("suite", path_ + " line " + std::to_string(line_), what); }
+    InputError error(const std::string& what) const {
+        return InputError("suite", path_ + " line " + std::to_string(line_), what);
+    }
 
     // RFC 4180 without line breaks in cells: commas separate, double quotes protect commas, and
     // "" inside quotes is one quote; blanks around an unquoted cell are padding.
@@ -55,9 +57,12 @@ private:
         for (std::size_t i = 0; i < text.size(); ++i) {
             const char c = text[i];
             if (quoted) {
-                if (c != '"') cells.back() += c;
-                else if (i + 1 < text.size() && text[i + 1] == '"') cells.back() += text[++i];
-                else quoted = false;
+                if (c != '"')
+                    cells.back() += c;
+                else if (i + 1 < text.size() && text[i + 1] == '"')
+                    cells.back() += text[++i];
+                else
+                    quoted = false;
             } else if (c == '"' && cells.back().find_first_not_of(" \t") == std::string::npos) {
                 cells.back().clear();
                 quoted = was_quoted = true;
@@ -86,7 +91,8 @@ private:
                 suite.metadata_columns.push_back(cells[c]);
         }
         for (const char* required : {"name", "file", "format"})
-            if (!index_.count(required)) throw error(std::string("a header with a '") + required + "' column (see docs/records.md)");
+            if (!index_.count(required))
+                throw error(std::string("a header with a '") + required + "' column (see docs/records.md)");
     }
 
     std::string cell(const std::vector<std::string>& cells, const std::string& column) const {
@@ -119,7 +125,8 @@ private:
         SuiteRecord r;
         r.line = line_;
         r.name = cell(cells, "name");
-        if (r.name.empty() || r.name.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_-.") != std::string::npos)
+        if (r.name.empty() ||
+            r.name.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_-.") != std::string::npos)
             throw error("name '" + r.name + "' must be letters, digits, '_', '-' or '.' (it names the record in the output)");
         if (!names_.insert(r.name).second) throw error("name '" + r.name + "' is already used on an earlier line");
         RecordSource& s = r.source;
@@ -138,7 +145,8 @@ private:
             }
         }
         s.dt_s = number(cells, "dt", 0.0);
-        if (s.format == RecordFormat::accel_only && s.dt_s == 0.0) throw error("dt is needed for an accel_only record (it has no time column)");
+        if (s.format == RecordFormat::accel_only && s.dt_s == 0.0)
+            throw error("dt is needed for an accel_only record (it has no time column)");
         if (s.dt_s != 0.0 && !(s.dt_s >= record_dt_min_s && s.dt_s <= record_dt_max_s))
             throw error("dt " + format_number(s.dt_s) + " s is outside " + format_number(record_dt_min_s) + " to " +
                         format_number(record_dt_max_s) + " s");
@@ -149,7 +157,8 @@ private:
         s.path = existing_file("file", cell(cells, "file"));
         const std::string vfile = cell(cells, "vertical_file");
         const int vcolumn = integer(cells, "vertical_column", 0);
-        if (!vfile.empty() || vcolumn != 0) s.vertical = VerticalSource{vfile.empty() ? "" : existing_file("vertical_file", vfile), vcolumn};
+        if (!vfile.empty() || vcolumn != 0)
+            s.vertical = VerticalSource{vfile.empty() ? "" : existing_file("vertical_file", vfile), vcolumn};
         for (const std::string& m : suite.metadata_columns) r.metadata.push_back(cell(cells, m));
         return r;
     }

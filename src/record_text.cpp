@@ -58,9 +58,7 @@ std::ifstream open(const std::string& field, const std::string& path) {
     return in;
 }
 
-bool is_comment_or_blank(std::string_view line) {
-    return line.empty() || line[0] == '#' || line[0] == '%';
-}
+bool is_comment_or_blank(std::string_view line) { return line.empty() || line[0] == '#' || line[0] == '%'; }
 
 std::string at(const std::string& path, int line) { return path + " line " + std::to_string(line); }
 
@@ -115,8 +113,8 @@ std::vector<Samples> read_columns(const std::string& field, const std::string& p
             for (int c : wanted)
                 if (c < 1 || static_cast<std::size_t>(c) > width)
                     throw InputError(column_field, std::to_string(c),
-                                     "a column of " + path + ", 1 to " + std::to_string(width) + " (line " + std::to_string(n) + " has " +
-                                         std::to_string(width) + ")");
+                                     "a column of " + path + ", 1 to " + std::to_string(width) + " (line " + std::to_string(n) +
+                                         " has " + std::to_string(width) + ")");
         } else if (fields.size() != width) {
             throw InputError(field, at(path, n),
                              std::to_string(fields.size()) + " columns where line " + std::to_string(width_line) + " has " +
@@ -138,13 +136,17 @@ At2 read_at2(const std::string& field, const std::string& path) {
     std::ifstream in = open(field, path);
     std::string header[4];
     for (int n = 0; n < 4; ++n)
-        if (!std::getline(in, header[n])) throw InputError(field, path, "a PEER .AT2 file: four header lines, then the samples (it ends on line " + std::to_string(n) + ")");
+        if (!std::getline(in, header[n]))
+            throw InputError(field, path,
+                             "a PEER .AT2 file: four header lines, then the samples (it ends on line " + std::to_string(n) + ")");
     At2 a;
     const std::string kind = upper(header[2]);
     const auto unit_pos = kind.find("UNITS OF");
     const std::string unit = unit_pos == std::string::npos ? "" : std::string(trim(std::string_view(kind).substr(unit_pos + 8)));
     if (kind.find("ACCELERATION") == std::string::npos || unit.empty())
-        throw InputError(field, at(path, 3), "'" + std::string(trim(header[2])) + "' does not state an acceleration unit (a PEER .AT2 says 'ACCELERATION TIME SERIES IN UNITS OF G')");
+        throw InputError(field, at(path, 3),
+                         "'" + std::string(trim(header[2])) +
+                             "' does not state an acceleration unit (a PEER .AT2 says 'ACCELERATION TIME SERIES IN UNITS OF G')");
     a.units = at2_units(unit);
     if (a.units.empty()) throw InputError(field, at(path, 3), "unit '" + unit + "' is not one of G, CM/S/S, M/S/S");
 
@@ -159,7 +161,9 @@ At2 read_at2(const std::string& field, const std::string& path) {
         if (!(numbers >> npts >> a.dt_s)) npts = NAN;
     }
     if (!(npts >= 1 && npts == std::floor(npts) && npts < 1e9) || !std::isfinite(a.dt_s))
-        throw InputError(field, at(path, 4), "'" + std::string(trim(header[3])) + "' does not give NPTS and DT (e.g. 'NPTS=  2000, DT=   0.020 SEC')");
+        throw InputError(
+            field, at(path, 4),
+            "'" + std::string(trim(header[3])) + "' does not give NPTS and DT (e.g. 'NPTS=  2000, DT=   0.020 SEC')");
 
     std::string text;
     for (int n = 5; std::getline(in, text); ++n) {
@@ -173,8 +177,8 @@ At2 read_at2(const std::string& field, const std::string& path) {
     }
     if (a.samples.values.size() != static_cast<std::size_t>(npts))
         throw InputError(field, path,
-                         std::to_string(a.samples.values.size()) + " samples after the header where line 4 says NPTS = " +
-                             format_number(npts));
+                         std::to_string(a.samples.values.size()) +
+                             " samples after the header where line 4 says NPTS = " + format_number(npts));
     return a;
 }
 

@@ -24,7 +24,6 @@ namespace {
 const Block kBlock = rectangular_block(0.30, 1.36, 3361.0);
 const std::string kRecords = ROCKSWEEP_RECORDS_DIR;
 
-
 }  // namespace
 
 TEST(Record, ElCentroInGAndSylmarInMetresPerSecondSquared) {

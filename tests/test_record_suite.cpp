@@ -16,7 +16,6 @@ namespace {
 
 const std::string kDir = rocksweep::test_files::temp_dir();
 
-
 // The message the command line would print, or "accepted".
 std::string message(const std::string& suite_text) {
     write_file("quake.dat", "0 0\n0.01 0.1\n0.02 0\n");
@@ -64,9 +63,11 @@ TEST(RecordSuite, SpreadsheetExportsAreRead) {
     // empty cells, an absolute path
     write_file("quake.dat", "0 0\n0.01 0.1\n");
     const std::string abs = write_file("abs.dat", "0,0\n0.01,1\n");
-    const std::string path = write_file("sheet.csv", "\xEF\xBB\xBFname, file ,format,units,scale,magnitude,note\r\n"
-                                                     "a,quake.dat,time_accel,g,,6.5,\"the \"\"main\"\" shock, N\"\r\n"
-                                                     "b," + abs + ",time_accel,cm/s^2,-2,,\r\n");
+    const std::string path = write_file("sheet.csv",
+                                        "\xEF\xBB\xBFname, file ,format,units,scale,magnitude,note\r\n"
+                                        "a,quake.dat,time_accel,g,,6.5,\"the \"\"main\"\" shock, N\"\r\n"
+                                        "b," +
+                                            abs + ",time_accel,cm/s^2,-2,,\r\n");
     const RecordSuite s = read_record_suite(path);
     ASSERT_EQ(s.records.size(), 2u);
     EXPECT_EQ(s.metadata_columns, (std::vector<std::string>{"magnitude", "note"}));
@@ -81,26 +82,31 @@ TEST(RecordSuite, SpreadsheetExportsAreRead) {
 TEST(RecordSuite, RowsThatCannotBeReadAreRefusedNamingTheLine) {
     EXPECT_EQ(message(kHeader + "a,quake.dat,time_accel,g,\na,quake.dat,time_accel,g,\n"),
               at_line(3) + "name 'a' is already used on an earlier line");
-    EXPECT_EQ(message(kHeader + "a,nope.dat,time_accel,g,\n"), at_line(2) + "file 'nope.dat' does not exist (looked for " + kDir + "nope.dat)");
+    EXPECT_EQ(message(kHeader + "a,nope.dat,time_accel,g,\n"),
+              at_line(2) + "file 'nope.dat' does not exist (looked for " + kDir + "nope.dat)");
     EXPECT_EQ(message(kHeader + "a,quake.dat,time_accel,gal,\n"),
               at_line(2) + "units 'gal' is not g, m/s^2 or cm/s^2 (only an at2 file may leave it empty)");
     EXPECT_EQ(message(kHeader + "a,quake.dat,time_accel,,\n"),
               at_line(2) + "units '' is not g, m/s^2 or cm/s^2 (only an at2 file may leave it empty)");
     EXPECT_EQ(message(kHeader + "a,quake.dat,peer,g,\n"), at_line(2) + "format 'peer' is not time_accel, accel_only or at2");
-    EXPECT_EQ(message(kHeader + "a,quake.dat,accel_only,g,\n"), at_line(2) + "dt is needed for an accel_only record (it has no time column)");
+    EXPECT_EQ(message(kHeader + "a,quake.dat,accel_only,g,\n"),
+              at_line(2) + "dt is needed for an accel_only record (it has no time column)");
     EXPECT_EQ(message(kHeader + "a,quake.dat,accel_only,g,0.0x\n"), at_line(2) + "dt '0.0x' is not a finite number");
     EXPECT_EQ(message(kHeader + "a,quake.dat,accel_only,g,1e6\n"), at_line(2) + "dt 1000000 s is outside 1e-05 to 1 s");
     EXPECT_EQ(message(kHeader + "a/b,quake.dat,time_accel,g,\n"),
               at_line(2) + "name 'a/b' must be letters, digits, '_', '-' or '.' (it names the record in the output)");
-    EXPECT_EQ(message("name,file,format,units,column\na,quake.dat,time_accel,g,2.5\n"), at_line(2) + "column '2.5' is not a whole number >= 0");
+    EXPECT_EQ(message("name,file,format,units,column\na,quake.dat,time_accel,g,2.5\n"),
+              at_line(2) + "column '2.5' is not a whole number >= 0");
     EXPECT_EQ(message(kHeader + "a,quake.dat,time_accel,g\n"), at_line(2) + "4 cells where the header has 5");
-    EXPECT_EQ(message(kHeader + "a,quake.dat,time_accel,\"g,\n"), at_line(2) + "a quote that is not closed (cells cannot span lines)");
+    EXPECT_EQ(message(kHeader + "a,quake.dat,time_accel,\"g,\n"),
+              at_line(2) + "a quote that is not closed (cells cannot span lines)");
     EXPECT_EQ(message(kHeader + "a,quake.dat,time_accel,\"g\"x,\n"), at_line(2) + "text after the closing quote of cell 4");
     EXPECT_EQ(message(kHeader + "a,quake.dat,time_accel,g,\n"), "accepted");
 }
 
 TEST(RecordSuite, HeadersMustNameTheReadingColumnsOnce) {
-    EXPECT_EQ(message("# only a comment\nname,file,units\na,quake.dat,g\n"), at_line(2) + "a header with a 'format' column (see docs/records.md)");
+    EXPECT_EQ(message("# only a comment\nname,file,units\na,quake.dat,g\n"),
+              at_line(2) + "a header with a 'format' column (see docs/records.md)");
     EXPECT_EQ(message("name,file,format,event,event\n"), at_line(1) + "column 'event' appears twice in the header");
     EXPECT_EQ(message("name,file,format,,event\n"), at_line(1) + "column 4 of the header has no name");
     EXPECT_EQ(message(""), "--suite = " + kDir + "suite.csv is invalid: a header row naming the columns (the file has none)");

@@ -52,28 +52,28 @@ struct VerticalSource {
 struct RecordSource {
     std::string path;
     RecordFormat format = RecordFormat::time_accel;
-    std::string units;      ///< "g", "m/s^2", "cm/s^2"; "" only for .AT2 (its header states it)
-    double dt_s = 0.0;      ///< sampling interval: required for accel_only; 0 = from the file
-    int column = 0;         ///< 1-based, counting the time column; 0 = default (2 for time_accel, 1 for accel_only)
-    double scale = 1.0;     ///< applied to every sample (both components); finite and non-zero
-    int skip_lines = 0;     ///< header lines to skip before the numbers (time_accel, accel_only)
+    std::string units;   ///< "g", "m/s^2", "cm/s^2"; "" only for .AT2 (its header states it)
+    double dt_s = 0.0;   ///< sampling interval: required for accel_only; 0 = from the file
+    int column = 0;      ///< 1-based, counting the time column; 0 = default (2 for time_accel, 1 for accel_only)
+    double scale = 1.0;  ///< applied to every sample (both components); finite and non-zero
+    int skip_lines = 0;  ///< header lines to skip before the numbers (time_accel, accel_only)
     std::optional<VerticalSource> vertical;
 };
 
 /// A record as read: samples at t = i dt from t = 0, in units of standard gravity, scale applied.
 struct Record {
-    std::string path;            ///< the horizontal component's file
-    std::string vertical_path;   ///< the vertical component's file ("" if none)
+    std::string path;           ///< the horizontal component's file
+    std::string vertical_path;  ///< the vertical component's file ("" if none)
     RecordFormat format = RecordFormat::time_accel;
-    std::string units;           ///< unit of the file's samples (given, or from the .AT2 header)
+    std::string units;  ///< unit of the file's samples (given, or from the .AT2 header)
     double scale = 1.0;
-    int column = 0;              ///< column read (1-based; 0 for .AT2)
-    int vertical_column = 0;     ///< column of the vertical component (0 for .AT2 or none)
-    std::size_t npts = 0;        ///< samples read from the file
+    int column = 0;           ///< column read (1-based; 0 for .AT2)
+    int vertical_column = 0;  ///< column of the vertical component (0 for .AT2 or none)
+    std::size_t npts = 0;     ///< samples read from the file
     double dt_s = 0.0;
-    bool zero_prepended = false; ///< the file began at t = dt: a sample 0 was put at t = 0
-    std::vector<double> ax_g;    ///< horizontal ground acceleration / standard g
-    std::vector<double> ay_g;    ///< vertical, same times and length; empty if none
+    bool zero_prepended = false;  ///< the file began at t = dt: a sample 0 was put at t = 0
+    std::vector<double> ax_g;     ///< horizontal ground acceleration / standard g
+    std::vector<double> ay_g;     ///< vertical, same times and length; empty if none
 
     double duration_s() const { return static_cast<double>(ax_g.size() - 1) * dt_s; }
 };
