@@ -130,10 +130,15 @@ std::vector<Component> read_text(const std::string& field, const std::string& pa
     return out;
 }
 
+// `units`: the unit expected (given by the user, or the horizontal's for the vertical), "" if
+// none yet; set to the file's.
 Component read_at2_component(const std::string& field, const std::string& path, const RecordSource& s, std::string& units) {
     detail::At2 a = detail::read_at2(field, path);
-    if (!units.empty() && units != a.units)
+    if (!units.empty() && units != a.units) {
+        if (field == vertical_field)
+            throw InputError(field, path, "an .AT2 in " + units + " like the horizontal component (it states " + a.units + ")");
         throw InputError("record-units", units, "the unit " + path + " states, " + a.units + " (or none: an .AT2 gives its own)");
+    }
     units = a.units;
     if (s.dt_s != 0.0 && s.dt_s != a.dt_s)
         throw InputError("record-dt", format_number(s.dt_s),

@@ -209,6 +209,18 @@ TEST(RecordMalformed, At2HeadersAndSampleCounts) {
     conflict.units = "m/s^2";
     EXPECT_EQ(message(conflict),
               "--record-units = m/s^2 is invalid: the unit " + old + " states, g (or none: an .AT2 gives its own)");
+    // a vertical .AT2 beside it: same step, padded with rest if shorter; its unit must agree
+    RecordSource with_vertical = at2_source(old);
+    with_vertical.vertical = VerticalSource{write_file("up.AT2", at2(kind, "NPTS= 2, DT= 0.01 SEC", "0.5 -0.5\n")), 0};
+    const Record both = read_record(with_vertical);
+    ASSERT_EQ(both.ay_g.size(), 6u);
+    EXPECT_DOUBLE_EQ(both.ay_g[1], -0.5);
+    EXPECT_EQ(both.ay_g[2], 0.0);
+    with_vertical.vertical = VerticalSource{gal, 0};
+    EXPECT_EQ(message(with_vertical),
+              "--record-vertical = " + gal + " is invalid: an .AT2 in g like the horizontal component (it states cm/s^2)");
+    with_vertical.vertical = VerticalSource{"", 2};
+    EXPECT_EQ(message(with_vertical), "--record-vertical = (a column) is invalid: a second .AT2 file, without a column");
     const std::string truncated = write_file("truncated.AT2", "PEER NGA\nTEST\n");
     EXPECT_EQ(
         message(at2_source(truncated)),
