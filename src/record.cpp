@@ -108,11 +108,11 @@ struct Components {
 const std::string vertical_field = "record-vertical";
 
 std::vector<Component> read_text(const std::string& field, const std::string& path, const RecordSource& s,
-                                 const std::vector<int>& columns) {
+                                 const std::vector<detail::Wanted>& columns) {
     const bool timed = s.format == RecordFormat::time_accel;
-    std::vector<int> wanted = columns;
-    if (timed) wanted.insert(wanted.begin(), 1);
-    std::vector<Samples> read = detail::read_columns(field, path, s.skip_lines, wanted, "record-column");
+    std::vector<detail::Wanted> wanted = columns;
+    if (timed) wanted.insert(wanted.begin(), {1, "record-column"});
+    std::vector<Samples> read = detail::read_columns(field, path, s.skip_lines, wanted);
     TimeGrid grid;
     if (timed) {
         grid = check_times(field, path, read.front());
@@ -176,14 +176,16 @@ Components read_text_components(const RecordSource& s, Record& r) {
     if (same_file && s.vertical->column == 0)
         throw InputError("record-vertical-column", "(missing)", "the column of " + s.path + " holding the vertical component");
     if (s.vertical) r.vertical_column = acceleration_column("record-vertical-column", s.format, s.vertical->column);
-    std::vector<Component> read =
-        read_text("record", s.path, s, same_file ? std::vector<int>{r.column, r.vertical_column} : std::vector<int>{r.column});
+    std::vector<detail::Wanted> columns{{r.column, "record-column"}};
+    const detail::Wanted vertical{r.vertical_column, "record-vertical-column"};
+    if (same_file) columns.push_back(vertical);
+    std::vector<Component> read = read_text("record", s.path, s, columns);
     if (s.format == RecordFormat::time_accel) check_dt("record", s.path, read[0].grid.dt_s);
     Components c{std::move(read[0]), std::nullopt};
     if (same_file)
         c.vertical = std::move(read[1]);
     else if (s.vertical)
-        c.vertical = std::move(read_text(vertical_field, s.vertical->path, s, {r.vertical_column})[0]);
+        c.vertical = std::move(read_text(vertical_field, s.vertical->path, s, {vertical})[0]);
     if (s.vertical) r.vertical_path = same_file ? s.path : s.vertical->path;
     return c;
 }

@@ -97,7 +97,7 @@ bool to_double(std::string_view text, double& x) {
 }
 
 std::vector<Samples> read_columns(const std::string& field, const std::string& path, int skip_lines,
-                                  const std::vector<int>& wanted, const std::string& column_field) {
+                                  const std::vector<Wanted>& wanted) {
     std::ifstream in = open(field, path);
     std::vector<Samples> out(wanted.size());
     std::size_t width = 0;
@@ -110,9 +110,9 @@ std::vector<Samples> read_columns(const std::string& field, const std::string& p
         if (width == 0) {
             width = fields.size();
             width_line = n;
-            for (int c : wanted)
-                if (c < 1 || static_cast<std::size_t>(c) > width)
-                    throw InputError(column_field, std::to_string(c),
+            for (const Wanted& w : wanted)
+                if (w.column < 1 || static_cast<std::size_t>(w.column) > width)
+                    throw InputError(w.option, std::to_string(w.column),
                                      "a column of " + path + ", 1 to " + std::to_string(width) + " (line " + std::to_string(n) +
                                          " has " + std::to_string(width) + ")");
         } else if (fields.size() != width) {
@@ -123,7 +123,7 @@ std::vector<Samples> read_columns(const std::string& field, const std::string& p
         for (std::size_t c = 0; c < fields.size(); ++c) {
             const double x = parse_number(field, at(path, n), fields[c], static_cast<int>(c + 1));
             for (std::size_t k = 0; k < wanted.size(); ++k) {
-                if (static_cast<std::size_t>(wanted[k]) != c + 1) continue;
+                if (static_cast<std::size_t>(wanted[k].column) != c + 1) continue;
                 out[k].values.push_back(x);
                 out[k].lines.push_back(n);
             }

@@ -17,12 +17,18 @@ struct Samples {
     std::vector<int> lines;
 };
 
-/// Reads the columns `wanted` (1-based) of a text table: fields separated by commas or by
-/// whitespace, every data line with the same number of fields, every field a finite number.
-/// Blank lines and lines starting with '#' or '%' are skipped, and the first `skip_lines`
-/// lines. `field` names the option in errors; `column_field` the option choosing columns.
+/// A column to read (1-based) and the option that chose it, which an error about it names.
+struct Wanted {
+    int column;
+    std::string option;
+};
+
+/// Reads the columns `wanted` of a text table: fields separated by commas or by whitespace,
+/// every data line with the same number of fields, every field a finite number. Blank lines
+/// and lines starting with '#' or '%' are skipped, and the first `skip_lines` lines. `field`
+/// names the option in errors about the file.
 std::vector<Samples> read_columns(const std::string& field, const std::string& path, int skip_lines,
-                                  const std::vector<int>& wanted, const std::string& column_field);
+                                  const std::vector<Wanted>& wanted);
 
 /// A PEER NGA .AT2 file: unit and sampling interval from its header.
 struct At2 {

@@ -153,6 +153,8 @@ TEST(RecordMalformed, ColumnsThatTheFileDoesNotHave) {
     s.column = 1;
     EXPECT_EQ(message(s), "--record-column = 1 is invalid: 2 or more: column 1 of a time_accel file is the time");
     s.column = 0;
+    s.vertical = VerticalSource{"", 3};
+    EXPECT_EQ(message(s), "--record-vertical-column = 3 is invalid: a column of " + s.path + ", 1 to 2 (line 1 has 2)");
     s.vertical = VerticalSource{"", 0};
     EXPECT_EQ(message(s),
               "--record-vertical-column = (missing) is invalid: the column of " + s.path + " holding the vertical component");
