@@ -116,6 +116,7 @@ private:
     }
 
     std::string existing_file(const std::string& column, const std::string& name) const {
+        if (name.empty()) throw error(column + " is empty (the record's file, relative to the suite file)");
         const fs::path p = fs::path(name).is_absolute() ? fs::path(name) : folder_ / name;
         if (!fs::is_regular_file(p)) throw error(column + " '" + name + "' does not exist (looked for " + p.string() + ")");
         return p.string();

@@ -84,6 +84,8 @@ TEST(RecordSuite, RowsThatCannotBeReadAreRefusedNamingTheLine) {
               at_line(3) + "name 'a' is already used on an earlier line");
     EXPECT_EQ(message(kHeader + "a,nope.dat,time_accel,g,\n"),
               at_line(2) + "file 'nope.dat' does not exist (looked for " + kDir + "nope.dat)");
+    EXPECT_EQ(message(kHeader + "a,,time_accel,g,\n"),
+              at_line(2) + "file is empty (the record's file, relative to the suite file)");
     EXPECT_EQ(message(kHeader + "a,quake.dat,time_accel,gal,\n"),
               at_line(2) + "units 'gal' is not g, m/s^2 or cm/s^2 (only an at2 file may leave it empty)");
     EXPECT_EQ(message(kHeader + "a,quake.dat,time_accel,,\n"),
