@@ -4,6 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iterator>
+#include <set>
+#include <string>
 #include <vector>
 
 #include "rocksweep/intensity.hpp"
@@ -75,4 +78,21 @@ TEST(Intensity, PgaOverGTanAlphaUsesTheBlocksGravity) {
     // tan alpha = 0.25: 0.2 g of standard gravity is 0.8 of the uplift threshold under 9.80665
     EXPECT_NEAR(pga_over_g_tan_alpha(0.2, std::atan(0.25), standard_gravity), 0.8, 1e-14);
     EXPECT_NEAR(pga_over_g_tan_alpha(0.2, std::atan(0.25), 9.81), 0.8 * standard_gravity / 9.81, 1e-14);
+}
+
+TEST(Intensity, FieldTableNamesEveryMeasureOnce) {
+    // a writer loops over intensity_fields: every member of IntensityMeasures (all doubles) must
+    // be there once, under its own name
+    constexpr std::size_t members = sizeof(IntensityMeasures) / sizeof(double);
+    ASSERT_EQ(std::size(intensity_fields), members);
+    std::set<std::string> names;
+    for (std::size_t i = 0; i < members; ++i) {
+        names.insert(intensity_fields[i].name);
+        for (std::size_t j = 0; j < i; ++j) EXPECT_FALSE(intensity_fields[i].value == intensity_fields[j].value) << i << " " << j;
+    }
+    EXPECT_EQ(names.size(), members);
+    IntensityMeasures m;
+    m.pgv_m_s = 42.0;
+    EXPECT_EQ(m.*(intensity_fields[2].value), 42.0);
+    EXPECT_EQ(std::string(intensity_fields[2].name), "pgv_m_s");
 }

@@ -21,6 +21,29 @@ struct IntensityMeasures {
     double pga_vertical_g = 0.0;          ///< max |a_v|; NaN when the record has no vertical component
 };
 
+/// Each measure's name, unit and meaning, for writers that store them one dataset per field
+/// (name as the dataset, units and long_name as its attributes).
+struct IntensityField {
+    const char* name;
+    const char* units;
+    const char* long_name;
+    double IntensityMeasures::*value;
+};
+
+inline constexpr IntensityField intensity_fields[] = {
+    {"pga_g", "1", "peak ground acceleration / standard gravity", &IntensityMeasures::pga_g},
+    {"pga_time_s", "s", "time of the peak ground acceleration", &IntensityMeasures::pga_time_s},
+    {"pgv_m_s", "m/s", "peak ground velocity (integrated record, no baseline correction)", &IntensityMeasures::pgv_m_s},
+    {"pgv_time_s", "s", "time of the peak ground velocity", &IntensityMeasures::pgv_time_s},
+    {"residual_velocity_m_s", "m/s", "ground velocity at the end of the record", &IntensityMeasures::residual_velocity_m_s},
+    {"arias_m_s", "m/s", "Arias intensity", &IntensityMeasures::arias_m_s},
+    {"significant_duration_s", "s", "D5-95: time between 5 % and 95 % of the Arias intensity",
+     &IntensityMeasures::significant_duration_s},
+    {"duration_s", "s", "record length", &IntensityMeasures::duration_s},
+    {"pga_vertical_g", "1", "peak vertical ground acceleration / standard gravity (NaN: none)",
+     &IntensityMeasures::pga_vertical_g},
+};
+
 /// Measures of `record` (at least two samples, as read_record guarantees).
 IntensityMeasures intensity_measures(const Record& record);
 
