@@ -134,9 +134,7 @@ def plot(runs, out, title=None):
 
 
 def main(argv):
-    p = rsplot.parser(__doc__.split("\n\n")[0], "history files (.h5 or .csv)")
-    p.add_argument("--alpha", type=float, help="alpha [rad] for CSV histories (HDF5 files carry their own)")
-    p.add_argument("--title", help="figure title (default: the block and the excitation the runs share)")
+    p = rsplot.history_parser(__doc__)
     args = p.parse_args(legacy_order(argv))
     plot(load_all(args.inputs, args.alpha), args.output, args.title)
     return 0

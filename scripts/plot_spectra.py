@@ -261,7 +261,7 @@ def plot_diff(S, name_a, name_b, out):
 
 
 def main(argv):
-    p = rsplot.parser(__doc__.split("\n\n")[0], "spectra file (rocksweep sweep -o IN.h5)", n_inputs=1)
+    p = rsplot.parser(__doc__, "spectra file (rocksweep sweep -o IN.h5)", n_inputs=1)
     p.add_argument("--field", nargs="+", default=["outcome"], choices=list(FIELDS) + ["all"],
                    help="what to map (default outcome); several or `all` write OUT_<field> each")
     p.add_argument("--scenario", nargs="+", help="only these scenarios (default: all, in config order)")

@@ -64,6 +64,14 @@ def parser(description, inputs_help, n_inputs="+"):
     return p
 
 
+def history_parser(description):
+    """The command line of the scripts that draw histories: HISTORY... -o OUT [--alpha] [--title]."""
+    p = parser(description, "history files (.h5 or .csv)")
+    p.add_argument("--alpha", type=float, help="alpha [rad] for CSV histories (HDF5 files carry their own)")
+    p.add_argument("--title", help="figure title (default: the block and the excitation the runs share)")
+    return p
+
+
 def output_stem(out):
     stem, ext = os.path.splitext(out)
     return stem if ext.lower() in (".png", ".pdf") else out
