@@ -262,8 +262,8 @@ def plot_diff(S, name_a, name_b, out):
 
 def main(argv):
     p = rsplot.parser(__doc__, "spectra file (rocksweep sweep -o IN.h5)", n_inputs=1)
-    p.add_argument("--field", nargs="+", default=["outcome"], choices=list(FIELDS) + ["all"],
-                   help="what to map (default outcome); several or `all` write OUT_<field> each")
+    p.add_argument("--field", nargs="+", default=["outcome"], choices=list(FIELDS) + ["all"], metavar="FIELD",
+                   help="what to map: " + ", ".join(FIELDS) + " or all (default outcome); several write OUT_<field> each")
     p.add_argument("--scenario", nargs="+", help="only these scenarios (default: all, in config order)")
     p.add_argument("--diff", nargs=2, metavar=("A", "B"), help="map where B saves / loses the block against A")
     args = p.parse_args(legacy_order(argv))

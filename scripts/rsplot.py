@@ -84,6 +84,10 @@ def save(fig, out):
     paths = (stem + ".png", stem + ".pdf")
     for path in paths:
         fig.savefig(path, dpi=DPI)
+        # The layout is settled by the first file; laying out again for the second costs
+        # as much as drawing it and changes nothing.
+        if fig.get_layout_engine() is not None:
+            fig.set_layout_engine("none")
     plt.close(fig)
     return paths
 
@@ -311,10 +315,8 @@ def user_axes(ax, p, alpha, top=True, right=True):
     """Secondary axes in the user's terms: pulse period T_p = 2π/ω_p [s] on top (from
     ω_p/p), peak ground acceleration a_p0/g [g] on the right (from a_p0/(αg))."""
     if top and p:
-        def period(x):
-            x = np.asarray(x, dtype=float)
-            with np.errstate(divide="ignore"):
-                return np.where(x > 0, 2 * np.pi / (p * np.where(x > 0, x, 1)), np.inf)
+        def period(x):  # its own inverse; ω_p/p > 0 on every axis we draw
+            return 2 * np.pi / (p * np.maximum(np.asarray(x, dtype=float), 1e-12))
 
         sec = ax.secondary_xaxis("top", functions=(period, period))
         sec.set_xticks(period_ticks(ax.get_xlim(), p))
