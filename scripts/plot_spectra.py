@@ -51,7 +51,7 @@ FIELDS = {
     "peak_force_ratio": ("values", r"peak anchorage force / $F_u$", "peak anchorage force"),
     "mu_required": ("values", r"friction coefficient needed to rock without sliding", "friction needed"),
     "pivot_uplift": ("categories", None, "pivot uplift (the block would jump)"),
-    "impacts": ("values", "impacts (above the settling threshold)", "impacts"),
+    "impacts": ("values", "impacts of the blocks that stay up (above the settling threshold)", "impacts"),
     "broken": ("categories", None, "broken springs"),
 }
 
@@ -90,7 +90,9 @@ def field_layers(field, sc):
                        no_value, waiting])
     value = sc[field].astype(float)
     cats = [no_value, waiting]
-    if field == "max_rotation":  # an overturned block's max |θ| is π/2: say "overturned" instead
+    if field in ("max_rotation", "impacts"):
+        # An overturned block's max |θ| is π/2 and its impacts are its mode (the outcome map):
+        # these maps are about the blocks that stay up.
         cats.insert(0, (computed & over, OVERTURNED_COLOUR, "overturned"))
         value = np.where(computed & ~over, value, np.nan)
     elif field == "t_overturn":
@@ -155,12 +157,14 @@ def value_scale(field, panels):
     values = np.concatenate([l.value[np.isfinite(l.value)].ravel() for l in panels if l.value is not None] + [[]])
     if field in ("max_rotation", "peak_force_ratio"):
         lo, hi = 0.0, max(1.0, float(np.max(values))) if values.size else 1.0
-    elif values.size:
-        lo, hi = float(np.min(values)), float(np.percentile(values, 99.5))
+    elif field == "mu_required":
+        # Real bases offer 0.3-0.8; demands beyond 1 (up to hundreds where the pivot's reaction
+        # vanishes) would squash everything else into one colour: they show as "1 or more".
+        lo, hi = 0.0, 1.0
+    elif values.size:  # the bulk of the values; outliers show as the colour bar's ends
+        lo, hi = float(np.percentile(values, 0.5)), float(np.percentile(values, 99.5))
     else:
         lo, hi = 0.0, 1.0
-    if field == "impacts":
-        lo = 0.0
     if hi <= lo:
         hi = lo + 1.0
     cmap = plt.get_cmap({"t_overturn": "magma", "mu_required": "cividis"}.get(field, "viridis"))
@@ -238,10 +242,14 @@ def plot_field(S, names, field, out):
     norm, cmap = value_scale(field, panels) if kind == "values" else (None, None)
     mappable = None
     for ax, layers, title in zip(axes, panels, scenario_titles(S, names)):
-        mappable = draw(ax, S, layers, norm, cmap) or mappable
+        drawn = draw(ax, S, layers, norm, cmap)
+        mappable = drawn or mappable
         ax.set_title(title)
+        shown = [label for mask, _, label in layers.cats if np.any(mask)]
+        if kind == "values" and drawn is None and len(shown) == 1:  # one flat colour: say what it means
+            ax.text(0.5, 0.5, shown[0], transform=ax.transAxes, ha="center", va="center", fontsize=11, color="0.3")
     if mappable is not None:
-        extend = "max" if field in ("t_overturn", "mu_required", "impacts") else "neither"
+        extend = {"t_overturn": "both", "impacts": "both", "mu_required": "max"}.get(field, "neither")
         fig.colorbar(mappable, ax=axes, label=bar_label, shrink=0.6, extend=extend)
     legend(legend_ax, panels, 1 if len(names) % 2 else 2)
     fig.suptitle(header(S, words), fontsize=11)
