@@ -250,7 +250,7 @@ def plot_field(S, names, field, out):
             ax.text(0.5, 0.5, shown[0], transform=ax.transAxes, ha="center", va="center", fontsize=11, color="0.3")
     if mappable is not None:
         extend = {"t_overturn": "both", "impacts": "both", "mu_required": "max"}.get(field, "neither")
-        fig.colorbar(mappable, ax=axes, label=bar_label, shrink=0.6, extend=extend)
+        fig.colorbar(mappable, ax=axes, label=bar_label, shrink=0.9 if len(names) <= 2 else 0.6, extend=extend)
     legend(legend_ax, panels, 1 if len(names) % 2 else 2)
     fig.suptitle(header(S, words), fontsize=11)
     return rsplot.save(fig, out)
