@@ -42,6 +42,7 @@ PENDING_COLOUR, PENDING_HATCH = "#c8c8c8", "////"
 NO_VALUE_COLOUR = "#bdbdbd"
 OVERTURNED_COLOUR = "#5a5a5a"
 SAFE_COLOUR = "#f2f2f2"
+NO_ANCHORAGE = "no anchorage"
 
 # field -> (kind, colour-bar label or None, title words)
 FIELDS = {
@@ -73,6 +74,9 @@ def field_layers(field, sc):
     over = (out == MODE1) | (out == MODE2)
     no_value = (done == 2, NO_VALUE_COLOUR, "outcome only (inferred by --refine)")
     waiting = (pending, PENDING_COLOUR, "not yet computed")
+    if field in ("broken", "peak_force_ratio") and sc["attrs"].get("anchorage") == "free":
+        return Layers([(computed, SAFE_COLOUR, NO_ANCHORAGE), no_value, waiting],
+                      np.full(out.shape, np.nan) if field == "peak_force_ratio" else None)
     if field == "outcome":
         cats = [((out == code) & ~pending, colour, label) for code, colour, label in OUTCOMES]
         return Layers(cats + [waiting])
@@ -98,9 +102,6 @@ def field_layers(field, sc):
     elif field == "t_overturn":
         cats.insert(0, (computed & ~over, SAFE_COLOUR, "stays up"))
         value = np.where(computed & over, value, np.nan)
-    elif field == "peak_force_ratio" and not np.any(np.isfinite(value[computed])):
-        cats.insert(0, (computed, SAFE_COLOUR, "no anchorage"))
-        value = np.full(value.shape, np.nan)
     else:
         value = np.where(computed, value, np.nan)
     return Layers(cats, value)
@@ -220,7 +221,7 @@ def legend(legend_ax, layers_list, ncols):
     seen = {}
     for layers in layers_list:
         for mask, colour, label in layers.cats:
-            if np.any(mask) or label in ALWAYS_LISTED:
+            if (np.any(mask) or label in ALWAYS_LISTED) and label != NO_ANCHORAGE:  # that panel says so itself
                 seen.setdefault(label, colour)
     handles = [Patch(facecolor=c, edgecolor="#666666", label=lab,
                      hatch=PENDING_HATCH if c == PENDING_COLOUR else None) for lab, c in seen.items()]
@@ -246,7 +247,7 @@ def plot_field(S, names, field, out):
         mappable = drawn or mappable
         ax.set_title(title)
         shown = [label for mask, _, label in layers.cats if np.any(mask)]
-        if kind == "values" and drawn is None and len(shown) == 1:  # one flat colour: say what it means
+        if shown == [NO_ANCHORAGE]:  # a free block's panel of an anchorage field: say why it is flat
             ax.text(0.5, 0.5, shown[0], transform=ax.transAxes, ha="center", va="center", fontsize=11, color="0.3")
     if mappable is not None:
         extend = {"t_overturn": "both", "impacts": "both", "mu_required": "max"}.get(field, "neither")
