@@ -1,174 +1,307 @@
 #!/usr/bin/python3
-"""Overturning spectra of a rocksweep file, one panel per scenario.
+"""Maps of a rocksweep spectra file, one panel per scenario.
 
-usage: plot_spectra.py IN.h5 OUT.png
+    plot_spectra.py IN.h5 -o OUT [--field NAME ...|all] [--scenario NAME ...]
+    plot_spectra.py IN.h5 -o OUT --diff A B
 
-x = omega_p / p, y = a_p0 / (alpha g); each cell coloured by its outcome: safe (light),
-overturned with impact (mode 1), overturned without impact (mode 2), not converged (black);
-cells not yet computed in a partial file are grey and hatched.
+x = omega_p / p, y = a_p0 / (alpha g), with the pulse period T_p [s] on top and the peak ground
+acceleration [g] on the right (from the file's p and alpha). Writes OUT.png and OUT.pdf (maps
+raster inside the PDF); with several fields, OUT_<field>.png/.pdf for each.
+
+Fields: outcome (safe, overturned with impact = mode 1, without = mode 2, not converged),
+max_rotation, t_overturn, peak_force_ratio, mu_required (friction needed), pivot_uplift,
+impacts, broken; `all` draws every one the file holds. --diff A B maps where scenario B keeps
+the block up that A lets overturn (B saves it) and the reverse (B loses it).
+Cells not yet computed in a partial file are grey and hatched; cells a --refine sweep
+inferred carry only the outcome and are grey on the other maps.
 """
 import math
 import os
 import sys
 
-import matplotlib
-
-matplotlib.use("Agg")  # files only, no display needed
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-from matplotlib.collections import PatchCollection  # noqa: E402
-from matplotlib.colors import BoundaryNorm, ListedColormap  # noqa: E402
-from matplotlib.patches import Patch, Rectangle  # noqa: E402
+import numpy as np
+from matplotlib.collections import PatchCollection
+from matplotlib.colors import BoundaryNorm, ListedColormap
+from matplotlib.patches import Patch, Rectangle
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import read_spectra  # noqa: E402
+import rsplot  # noqa: E402
+from rsplot import plt  # noqa: E402
 
-# (outcome code, colour, legend label); the position in this list is the colour index.
-CLASSES = [
-    (0, "#f7f7f7", "safe"),
-    (1, "#4a7fb5", "overturned with impact (mode 1)"),
-    (2, "#e08a3c", "overturned without impact (mode 2)"),
-    (255, "#000000", "not converged"),
+SAFE, MODE1, MODE2, NOT_CONVERGED = 0, 1, 2, 255
+# (outcome code, colour, legend label)
+OUTCOMES = [
+    (SAFE, "#f7f7f7", "safe"),
+    (MODE1, "#4a7fb5", "overturned with impact (mode 1)"),
+    (MODE2, "#e08a3c", "overturned without impact (mode 2)"),
+    (NOT_CONVERGED, "#000000", "not converged"),
 ]
-PENDING = len(CLASSES)
-PENDING_COLOUR = "#c8c8c8"
-PENDING_HATCH = "////"
+ALWAYS_LISTED = [label for code, _, label in OUTCOMES if code != NOT_CONVERGED]  # even where absent
+PENDING_COLOUR, PENDING_HATCH = "#c8c8c8", "////"
+NO_VALUE_COLOUR = "#bdbdbd"
+OVERTURNED_COLOUR = "#5a5a5a"
+SAFE_COLOUR = "#f2f2f2"
+NO_ANCHORAGE = "no anchorage"
+
+# field -> (kind, colour-bar label or None, title words)
+FIELDS = {
+    "outcome": ("categories", None, "outcome"),
+    "max_rotation": ("values", r"max $|\theta| / \alpha$ of the blocks that stay up", "maximum rotation"),
+    "t_overturn": ("values", "time of overturning [s]", "time of overturning"),
+    "peak_force_ratio": ("values", r"peak anchorage force / $F_u$", "peak anchorage force"),
+    "mu_required": ("values", r"friction coefficient needed to rock without sliding", "friction needed"),
+    "pivot_uplift": ("categories", None, "pivot uplift (the block would jump)"),
+    "impacts": ("values", "impacts of the blocks that stay up (above the settling threshold)", "impacts"),
+    "broken": ("categories", None, "broken springs"),
+}
 
 
-def alpha_fraction(r):
-    """theta_f / alpha as mathtext: 1 -> α, 0.5 -> α/2, 0.3 -> 0.3 α."""
-    if r == 1:
-        return r"\alpha"
-    if r > 0:
-        n = round(1.0 / r)
-        if n >= 2 and math.isclose(r * n, 1.0, rel_tol=1e-9):
-            return r"\alpha/{}".format(n)
-    return r"{:g}\,\alpha".format(r)
+class Layers:
+    """What one panel shows: flat-coloured categories [(mask, colour, label)] under an optional
+    continuous `value` (NaN where a category is shown)."""
+
+    def __init__(self, cats, value=None):
+        self.cats = cats
+        self.value = value
 
 
-def scenario_title(attrs):
-    kind = attrs.get("anchorage", "")
-    if kind == "free":
-        return "free-standing"
-    theta_f = r"$\theta_f = {}$".format(alpha_fraction(attrs.get("theta_f_ratio", float("nan"))))
-    if kind == "constant":
-        return "constant $K$, " + theta_f
-    if kind == "adaptive":
-        title = r"adaptive, $K_{{min}} = {:g}\,K_{{max}}$".format(attrs.get("kmin_ratio", float("nan")))
-        if attrs.get("theta_f_ratio", 1) != 1:
-            title += ", " + theta_f
-        if attrs.get("break_rule") == "force":
-            title += ", breaks at $F_u$"
-        return title
-    return kind
+def field_layers(field, sc):
+    done = sc["done"]
+    computed = done == 1
+    pending = done == 0
+    out = sc["outcome"]
+    over = (out == MODE1) | (out == MODE2)
+    no_value = (done == 2, NO_VALUE_COLOUR, "outcome only (inferred by --refine)")
+    waiting = (pending, PENDING_COLOUR, "not yet computed")
+    if field in ("broken", "peak_force_ratio") and sc["attrs"].get("anchorage") == "free":
+        return Layers([(computed, SAFE_COLOUR, NO_ANCHORAGE), no_value, waiting],
+                      np.full(out.shape, np.nan) if field == "peak_force_ratio" else None)
+    if field == "outcome":
+        cats = [((out == code) & ~pending, colour, label) for code, colour, label in OUTCOMES]
+        return Layers(cats + [waiting])
+    if field == "pivot_uplift":
+        up = sc["pivot_uplift"] != 0
+        return Layers([(computed & ~up, SAFE_COLOUR, "pivot stays down"),
+                       (computed & up, "#b2182b", "pivot would lift: the rocking model does not hold"),
+                       no_value, waiting])
+    if field == "broken":
+        br = sc["broken"]
+        return Layers([(computed & (br == 0), SAFE_COLOUR, "no spring broke"),
+                       (computed & (br == 1), "#66a61e", r"left spring broke ($\theta > 0$)"),
+                       (computed & (br == 2), "#7570b3", r"right spring broke ($\theta < 0$)"),
+                       (computed & (br == 3), "#d95f02", "both broke"),
+                       no_value, waiting])
+    value = sc[field].astype(float)
+    cats = [no_value, waiting]
+    if field in ("max_rotation", "impacts"):
+        # An overturned block's max |θ| is π/2 and its impacts are its mode (the outcome map):
+        # these maps are about the blocks that stay up.
+        cats.insert(0, (computed & over, OVERTURNED_COLOUR, "overturned"))
+        value = np.where(computed & ~over, value, np.nan)
+    elif field == "t_overturn":
+        cats.insert(0, (computed & ~over, SAFE_COLOUR, "stays up"))
+        value = np.where(computed & over, value, np.nan)
+    else:
+        value = np.where(computed, value, np.nan)
+    return Layers(cats, value)
 
 
-def cell_edges(centres):
-    """Edges of cells centred on `centres` (midpoints; the end cells as wide as their
-    neighbours); a single point gets a cell of width 10 % of its value (or 1)."""
-    c = np.asarray(centres, dtype=float)
-    if c.size == 1:
-        half = 0.05 * abs(c[0]) if c[0] != 0 else 0.5
-        return np.array([c[0] - half, c[0] + half])
-    mid = 0.5 * (c[1:] + c[:-1])
-    return np.concatenate([[c[0] - (mid[0] - c[0])], mid, [c[-1] + (c[-1] - mid[-1])]])
+def diff_layers(sa, sb, name_a, name_b):
+    """Where B saves the block A loses, and the reverse."""
+    both_done = (sa["done"] != 0) & (sb["done"] != 0)
+    valid = both_done & (sa["outcome"] != NOT_CONVERGED) & (sb["outcome"] != NOT_CONVERGED)
+    up_a, up_b = sa["outcome"] == SAFE, sb["outcome"] == SAFE
+    n = max(int(np.count_nonzero(valid)), 1)
+
+    def share(mask):
+        return "{} cells, {:.1f} %".format(int(np.count_nonzero(mask)), 100.0 * np.count_nonzero(mask) / n)
+
+    saves, loses = valid & ~up_a & up_b, valid & up_a & ~up_b
+    return Layers([
+        (valid & up_a & up_b, SAFE_COLOUR, "safe in both"),
+        (valid & ~up_a & ~up_b, "#969696", "overturns in both"),
+        (saves, "#1a9850", "{} saves the block ({})".format(name_b, share(saves))),
+        (loses, "#d73027", "{} loses the block ({})".format(name_b, share(loses))),
+        (both_done & ~valid, "#000000", "not converged in either"),
+        (~both_done, PENDING_COLOUR, "not yet computed"),
+    ])
 
 
-def class_index(outcome, done):
-    """Colour index per cell: position in CLASSES, or PENDING."""
-    idx = np.full(outcome.shape, PENDING, dtype=int)
-    for i, (code, _, _) in enumerate(CLASSES):
-        idx[(outcome == code) & done] = i
-    return idx
+def draw(ax, S, layers, norm=None, cmap=None):
+    """Draws one panel; returns the continuous mappable (or None)."""
+    xe = rsplot.cell_edges(S["omega_ratio"])
+    ye = rsplot.cell_edges(S["amplitude_ratio"])
+    ax.grid(False)  # the map is its own grid
+    index = np.full(layers.cats[0][0].shape, -1)
+    for k, (mask, _, _) in enumerate(layers.cats):
+        index[mask] = k
+    colours = ListedColormap([c for _, c, _ in layers.cats])
+    ax.pcolormesh(xe, ye, np.ma.masked_less(index, 0), cmap=colours,
+                  norm=BoundaryNorm(np.arange(-0.5, len(layers.cats)), len(layers.cats)),
+                  shading="flat", rasterized=True)
+    mappable = None
+    if layers.value is not None and np.any(np.isfinite(layers.value)):
+        mappable = ax.pcolormesh(xe, ye, np.ma.masked_invalid(layers.value), cmap=cmap, norm=norm,
+                                 shading="flat", rasterized=True)
+    pending = [mask for mask, colour, _ in layers.cats if colour == PENDING_COLOUR]
+    cells = np.argwhere(pending[0]) if pending else []
+    if len(cells):
+        boxes = [Rectangle((xe[j], ye[i]), xe[j + 1] - xe[j], ye[i + 1] - ye[i]) for i, j in cells]
+        ax.add_collection(PatchCollection(boxes, facecolor="none", edgecolor="#8a8a8a",
+                                          hatch=PENDING_HATCH, linewidth=0, rasterized=True))
+    return mappable
 
 
-def draw_panel(ax, S, sc, cmap, norm):
-    xe, ye = cell_edges(S["omega_ratio"]), cell_edges(S["amplitude_ratio"])
-    done = sc["done"] != 0
-    ax.pcolormesh(xe, ye, class_index(sc["outcome"], done), cmap=cmap, norm=norm, shading="flat")
-    pending = np.argwhere(~done)
-    if len(pending):
-        boxes = [
-            Rectangle((xe[j], ye[i]), xe[j + 1] - xe[j], ye[i + 1] - ye[i]) for i, j in pending
-        ]
-        ax.add_collection(
-            PatchCollection(boxes, facecolor="none", edgecolor="#8a8a8a", hatch=PENDING_HATCH, linewidth=0)
-        )
-    ax.set_xlim(xe[0], xe[-1])
-    ax.set_ylim(ye[0], ye[-1])
+def value_scale(field, panels):
+    """One colour scale for every panel of a field, so that panels compare."""
+    values = np.concatenate([l.value[np.isfinite(l.value)].ravel() for l in panels if l.value is not None] + [[]])
+    if field in ("max_rotation", "peak_force_ratio"):
+        lo, hi = 0.0, max(1.0, float(np.max(values))) if values.size else 1.0
+    elif field == "mu_required":
+        # Real bases offer 0.3-0.8; demands beyond 1 (up to hundreds where the pivot's reaction
+        # vanishes) would squash everything else into one colour: they show as "1 or more".
+        lo, hi = 0.0, 1.0
+    elif values.size:  # the bulk of the values; outliers show as the colour bar's ends
+        lo, hi = float(np.percentile(values, 0.5)), float(np.percentile(values, 99.5))
+    else:
+        lo, hi = 0.0, 1.0
+    if hi <= lo:
+        hi = lo + 1.0
+    cmap = plt.get_cmap({"t_overturn": "magma", "mu_required": "cividis"}.get(field, "viridis"))
+    return plt.Normalize(lo, hi), cmap
 
 
-def plot(S, out_png):
-    names = list(S["scenarios"])
-    n = max(len(names), 1)
-    ncols = 1 if n == 1 else 2
-    nrows = math.ceil(n / ncols)
-    fig, axes = plt.subplots(
-        nrows, ncols, figsize=(5.2 * ncols, 3.4 * nrows + 0.9), sharex=True, sharey=True, squeeze=False
-    )
-    cmap = ListedColormap([c for _, c, _ in CLASSES] + [PENDING_COLOUR])
-    norm = BoundaryNorm(np.arange(-0.5, PENDING + 1), cmap.N)
+def figure(S, n_panels):
+    """A figure with n_panels map axes (2 columns beyond one) and a legend row below them.
+    Returns (fig, panel axes in order, legend axis)."""
+    ncols = 1 if n_panels == 1 else 2
+    nrows = math.ceil(n_panels / ncols)
+    spare = nrows * ncols > n_panels  # an empty slot holds the legend, else a row below does
+    fig = plt.figure(figsize=(7.6 if ncols == 1 else 11.0, 3.5 * nrows + (1.6 if spare else 2.3)),
+                     layout="constrained")
+    grid = fig.add_gridspec(nrows + (0 if spare else 1), ncols,
+                            height_ratios=[1.0] * nrows + ([] if spare else [0.12 + 0.05 * ncols]))
+    axes = []
+    for k in range(n_panels):
+        r, c = divmod(k, ncols)
+        share = axes[0] if axes else None
+        axes.append(fig.add_subplot(grid[r, c], sharex=share, sharey=share))
+    legend_ax = fig.add_subplot(grid[nrows - 1, ncols - 1] if spare else grid[nrows, :])
+    legend_ax.axis("off")
+    p, alpha = S["attrs"].get("p_rad_s"), S["attrs"].get("alpha_rad")
+    xe, ye = rsplot.cell_edges(S["omega_ratio"]), rsplot.cell_edges(S["amplitude_ratio"])
+    axes[0].set_xlim(xe[0], xe[-1])  # shared: every panel's limits, before the secondary axes' ticks
+    axes[0].set_ylim(ye[0], ye[-1])
+    for k, ax in enumerate(axes):
+        r, c = divmod(k, ncols)
+        last_in_column = k + ncols >= n_panels
+        ax.set_xlabel(r"$\omega_p / p$" if last_in_column else "")
+        ax.tick_params(labelbottom=last_in_column)
+        ax.set_ylabel(r"$a_{p0} / (\alpha g)$" if c == 0 else "")
+        ax.tick_params(labelleft=c == 0)
+        rsplot.user_axes(ax, p, alpha, top=r == 0, right=c == ncols - 1 or k == n_panels - 1)
+    return fig, axes, legend_ax
 
-    titles = [scenario_title(S["scenarios"][nm]["attrs"]) for nm in names]
-    any_pending = False
-    for k, name in enumerate(names):
-        ax = axes[k // ncols][k % ncols]
-        sc = S["scenarios"][name]
-        draw_panel(ax, S, sc, cmap, norm)
-        any_pending |= bool(np.any(sc["done"] == 0))
-        title = titles[k]
-        if titles.count(title) > 1:  # same description twice: the names tell them apart
-            title += "  [{}]".format(name)
-        ax.set_title(title, fontsize=10)
-    spare = [axes[k // ncols][k % ncols] for k in range(len(names), nrows * ncols)]
-    for ax in spare:
-        ax.set_visible(False)
-    for r in range(nrows):
-        axes[r][0].set_ylabel(r"$a_{p0} / (\alpha g)$  [–]")
-    for c in range(ncols):
-        # The lowest visible panel of each column carries the x label and tick labels.
-        last = max(r for r in range(nrows) if r * ncols + c < len(names)) if c < len(names) else 0
-        axes[last][c].set_xlabel(r"$\omega_p / p$  [–]")
-        axes[last][c].xaxis.set_tick_params(labelbottom=True)
 
+def header(S, what):
     a = S["attrs"]
-    head = "Overturning spectra: 2b = {:.3g} m, 2h = {:.3g} m, p = {:.4g} rad/s, α = {:.4g} rad".format(
-        2 * a.get("half_width_m", float("nan")),
-        2 * a.get("half_height_m", float("nan")),
-        a.get("p_rad_s", float("nan")),
-        a.get("alpha_rad", float("nan")),
+    head = "{}: {}\n{}".format(
+        "Overturning spectra" if what == "outcome" else "Spectra",
+        what,
+        rsplot.block_words(a.get("half_width_m"), a.get("half_height_m"), a.get("alpha_rad"), a.get("p_rad_s")),
     )
     if a.get("complete") != 1:
         head += "\npartial file: {} of {} cells computed".format(a.get("n_done"), a.get("n_cells"))
-    fig.suptitle(head, fontsize=11)
+    return head
 
-    handles = [Patch(facecolor=c, edgecolor="#666666", label=lab) for _, c, lab in CLASSES]
-    if any_pending:
-        handles.append(
-            Patch(facecolor=PENDING_COLOUR, edgecolor="#8a8a8a", hatch=PENDING_HATCH, label="not yet computed")
-        )
-    if spare:
-        # An empty panel slot holds the legend.
-        fig.tight_layout()
-        spare[0].set_visible(True)
-        spare[0].axis("off")
-        spare[0].legend(handles=handles, loc="center", frameon=False, fontsize=10)
-    else:
-        ncol = len(handles) if len(handles) <= 4 else 3
-        fig.legend(handles=handles, loc="lower center", ncol=ncol, frameon=False, fontsize=9)
-        legend_in = 0.25 * math.ceil(len(handles) / ncol) + 0.15
-        fig.tight_layout(rect=(0, legend_in / fig.get_figheight(), 1, 1))
-    fig.savefig(out_png, dpi=130)
-    plt.close(fig)
+
+def legend(legend_ax, layers_list, ncols):
+    """One legend entry per category shown anywhere."""
+    seen = {}
+    for layers in layers_list:
+        for mask, colour, label in layers.cats:
+            if (np.any(mask) or label in ALWAYS_LISTED) and label != NO_ANCHORAGE:  # that panel says so itself
+                seen.setdefault(label, colour)
+    handles = [Patch(facecolor=c, edgecolor="#666666", label=lab,
+                     hatch=PENDING_HATCH if c == PENDING_COLOUR else None) for lab, c in seen.items()]
+    if not handles:
+        return
+    legend_ax.legend(handles=handles, loc="center", ncol=min(len(handles), ncols),
+                     frameon=False, fontsize=9)
+
+
+def scenario_titles(S, names):
+    titles = [rsplot.anchorage_words(S["scenarios"][nm]["attrs"]) for nm in names]
+    return [t + ("  [{}]".format(nm) if titles.count(t) > 1 else "") for t, nm in zip(titles, names)]
+
+
+def plot_field(S, names, field, out):
+    panels = [field_layers(field, S["scenarios"][nm]) for nm in names]
+    fig, axes, legend_ax = figure(S, len(names))
+    kind, bar_label, words = FIELDS[field]
+    norm, cmap = value_scale(field, panels) if kind == "values" else (None, None)
+    mappable = None
+    for ax, layers, title in zip(axes, panels, scenario_titles(S, names)):
+        drawn = draw(ax, S, layers, norm, cmap)
+        mappable = drawn or mappable
+        ax.set_title(title)
+        shown = [label for mask, _, label in layers.cats if np.any(mask)]
+        if shown == [NO_ANCHORAGE]:  # a free block's panel of an anchorage field: say why it is flat
+            ax.text(0.5, 0.5, shown[0], transform=ax.transAxes, ha="center", va="center", fontsize=11, color="0.3")
+    if mappable is not None:
+        extend = {"t_overturn": "both", "impacts": "both", "mu_required": "max"}.get(field, "neither")
+        fig.colorbar(mappable, ax=axes, label=bar_label, shrink=0.9 if len(names) <= 2 else 0.6, extend=extend)
+    legend(legend_ax, panels, 1 if len(names) % 2 else 2)
+    fig.suptitle(header(S, words), fontsize=11)
+    return rsplot.save(fig, out)
+
+
+def plot_diff(S, name_a, name_b, out):
+    scs = S["scenarios"]
+    titles = dict(zip([name_a, name_b], scenario_titles(S, [name_a, name_b])))
+    layers = diff_layers(scs[name_a], scs[name_b], titles[name_a], titles[name_b])
+    fig, axes, legend_ax = figure(S, 1)
+    draw(axes[0], S, layers)
+    axes[0].set_title("{}  versus  {}".format(titles[name_b], titles[name_a]))
+    legend(legend_ax, [layers], 1)
+    fig.suptitle(header(S, "where one anchorage saves the block and where it loses it"), fontsize=11)
+    return rsplot.save(fig, out)
 
 
 def main(argv):
-    if len(argv) != 3:
-        sys.stderr.write("usage: plot_spectra.py IN.h5 OUT.png\n")
-        return 2
-    plot(read_spectra.load(argv[1]), argv[2])
-    return 0
+    p = rsplot.parser(__doc__, "spectra file (rocksweep sweep -o IN.h5)", n_inputs=1)
+    p.add_argument("--field", nargs="+", default=["outcome"], choices=list(FIELDS) + ["all"], metavar="FIELD",
+                   help="what to map: " + ", ".join(FIELDS) + " or all (default outcome); several write OUT_<field> each")
+    p.add_argument("--scenario", nargs="+", help="only these scenarios (default: all, in config order)")
+    p.add_argument("--diff", nargs=2, metavar=("A", "B"), help="map where B saves / loses the block against A")
+    args = p.parse_args(legacy_order(argv))
+    S = read_spectra.load(args.inputs[0])
+    names = args.scenario or list(S["scenarios"])
+    unknown = [nm for nm in names + (args.diff or []) if nm not in S["scenarios"]]
+    if unknown:
+        p.error("no scenario {} in {}; it holds: {}".format(", ".join(unknown), args.inputs[0],
+                                                            ", ".join(S["scenarios"])))
+    if args.diff:
+        plot_diff(S, args.diff[0], args.diff[1], args.output)
+        return 0
+    fields = list(FIELDS) if "all" in args.field else args.field
+    stored = [f for f in fields if all(f in S["scenarios"][nm] for nm in names)]
+    missing = sorted(set(fields) - set(stored))
+    if missing:
+        sys.stderr.write("plot_spectra.py: {} not stored in {}: skipped\n".format(", ".join(missing), args.inputs[0]))
+    stem = rsplot.output_stem(args.output)
+    for f in stored:
+        plot_field(S, names, f, stem if len(fields) == 1 else "{}_{}".format(stem, f))
+    return 0 if stored else 1
+
+
+def legacy_order(argv):
+    """Accepts the old form `plot_spectra.py IN.h5 OUT.png` as well."""
+    if len(argv) == 2 and argv[1].lower().endswith((".png", ".pdf")):
+        return [argv[0], "-o", argv[1]]
+    return argv
 
 
 if __name__ == "__main__":
-    sys.exit(main(sys.argv))
+    sys.exit(main(sys.argv[1:]))

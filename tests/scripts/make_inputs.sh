@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# Inputs shared by the plotting tests (the `plot_inputs` fixture), small enough to take a
+# second or two: a 20 x 20 sweep of all seven S. Matteo scenarios and of the free one alone,
+# the paper's sample case as HDF5 and CSV histories, and Housner's constant-pulse pair.
+# usage: make_inputs.sh ROCKSWEEP CONFIG DIR
+set -euo pipefail
+rs=$1 cfg=$2 dir=$3
+rm -rf "$dir" && mkdir -p "$dir"
+grid=(--omega-ratio-points 20 --amplitude-ratio-points 20 --quiet)
+"$rs" sweep --config "$cfg" "${grid[@]}" -o "$dir/spectra.h5"
+"$rs" sweep --config "$cfg" "${grid[@]}" --scenario adaptive_rho0.5 -o "$dir/one.h5"
+for a in free constant adaptive; do
+  for ext in h5 csv; do
+    "$rs" simulate --config "$cfg" --anchorage "$a" --kmin-ratio 0.5 --omega-ratio 4 --amplitude-ratio 2.7 \
+      --t-end 8 -q -o "$dir/$a.$ext"
+  done
+done
+for d in 0.6380 0.6300; do
+  "$rs" simulate --config "$cfg" --pulse constant --amplitude-ratio 1.3 --duration "$d" \
+    --equations linearised --t-end 6 -q -o "$dir/housner_$d.h5"
+done
