@@ -208,6 +208,35 @@ struct Batch {
 
 enum class Event { none, overturn, fracture, impact, turn };
 
+/// The extreme of a smooth quantity between accepted states, from the parabola through the
+/// last three of one rocking phase: checks made only at step ends miss an extreme inside a
+/// step by O(dt^2); the vertex of the parabola misses it by O(dt^3).
+class ThreePointExtreme {
+public:
+    void reset() { n_ = 0; }
+    /// Adds (t, f); returns the parabola's vertex value if the middle point is a local extreme
+    /// of the kind `sign` (+1 max, -1 min) and the vertex lies between the outer points, else f.
+    double add(double t, double f, double sign) {
+        if (n_ == 3) { t_[0] = t_[1]; f_[0] = f_[1]; t_[1] = t_[2]; f_[1] = f_[2]; n_ = 2; }
+        t_[n_] = t; f_[n_] = f; ++n_;
+        if (n_ < 3) return f;
+        // f - f1 = a u^2 + b u through (u0, f0 - f1), (0, 0), (u2, f2 - f1), u = t - t1.
+        const double u0 = t_[0] - t_[1], u2 = t_[2] - t_[1], g0 = f_[0] - f_[1], g2 = f_[2] - f_[1];
+        if (!(u0 < 0.0 && u2 > 0.0) || !(sign * g0 < 0.0 && sign * g2 <= 0.0)) return f;
+        const double det = u0 * u2 * (u0 - u2);
+        const double a = (g0 * u2 - g2 * u0) / det, b = (u0 * u0 * g2 - u2 * u2 * g0) / det;
+        if (!(sign * a < 0.0)) return f;
+        const double u = -b / (2.0 * a);
+        if (!(u > u0 && u < u2)) return f;
+        const double v = f_[1] - b * b / (4.0 * a);
+        return sign * v > sign * f ? v : f;
+    }
+
+private:
+    double t_[3] = {0, 0, 0}, f_[3] = {0, 0, 0};
+    int n_ = 0;
+};
+
 /// The state machine of one cell: what its next trial step is, and what the step's end means.
 class Lane {
 public:
@@ -297,12 +326,19 @@ private:
     bool clipped_ = false;
     // event search on the current step: the root lies in (lo, hi]
     bool searching_ = false;
+    /// What the search locates: Event::none = the earliest of all events at the step's end;
+    /// Event::turn with peak_check_ = the in-step turning point of a step whose interpolated
+    /// peak reaches the fracture angle (a grazing fracture that the step's ends do not see).
+    Event target_ = Event::none;
+    bool peak_check_ = false;
     double lo_ = 0.0, hi_ = 0.0, g_lo_ = 0.0, g_hi_ = 0.0, trial_ = 0.0, width_ = 0.0;
     int last_moved_ = 0, iterations_ = 0;
     double hi_y_ = 0.0, hi_v_ = 0.0;
     double max_phi_ = 0.0;
     double mu_ = 0.0;           ///< max |f_x / f_y| so far
     bool pivot_up_ = false;     ///< f_y < 0 seen
+    ThreePointExtreme demand_, lift_;  ///< in-step extremes of |f_x / f_y| and f_y
+    double react_kappa_ = -1.0;        ///< the spring of the points they hold
     double w_exc_ = 0.0, w_anch_ = 0.0;
     CellResult r_{};
 
@@ -365,7 +401,10 @@ private:
         const double s = side_, phi = side_ * th_;
         // Past alpha the block is beyond its static stability limit: a fall to the ground needs
         // ever more friction (f_y -> 0 as theta_dot grows) and says nothing about survival.
-        if (phi > m_.alpha) return;
+        if (phi > m_.alpha) return reset_reactions();
+        // A spring that breaks or switches makes f_y jump: no parabola across the jump.
+        if (kappa() != react_kappa_) reset_reactions();
+        react_kappa_ = kappa();
         const bool acting = in_pulse();
         const double ax = acting ? m_.pulse.ax(t_) : 0.0, ay = acting ? m_.pulse.ay(t_) : 0.0;
         double sa, ca, sh, ch;
@@ -381,7 +420,13 @@ private:
         if (intact(side_))
             fy += (k_max_ ? m_.k_max_n_m : m_.k_min_n_m) * 4.0 * m_.half_width_m * (sh / ch) / (m_.mass_kg * m_.gravity);
         if (fy <= 0.0) pivot_up_ = true;
-        else mu_ = std::max(mu_, std::abs(fx) / fy);
+        else mu_ = std::max(mu_, demand_.add(t_, std::abs(fx) / fy, 1.0));
+        if (lift_.add(t_, fy, -1.0) <= 0.0) pivot_up_ = true;
+    }
+    /// A new rocking phase (impact, rest, past alpha): no parabola across it.
+    void reset_reactions() {
+        demand_.reset();
+        lift_.reset();
     }
 
     /// At rest on the moving ground the base carries m (g + ay) and m ax: the friction needed is
@@ -496,28 +541,61 @@ private:
         return which;
     }
 
-    void event_step(double dt, double y1, double v1, double a0) {
+    /// The value the current search drives to zero.
+    double g_search(double d, double y, double v) const {
         double g;
-        first_event(dt, y1, v1, g);
+        if (target_ == Event::none) first_event(d, y, v, g);
+        else g = g_event(target_, d, y, v);
+        return g;
+    }
+
+    /// Starts an Illinois search for a root in (lo, hi]; g_lo may be NaN (no value at lo).
+    void start_search(Event target, double lo, double g_lo, double hi, double g_hi, double y_hi, double v_hi) {
+        searching_ = true;
+        target_ = target;
+        last_moved_ = 0;
+        iterations_ = 0;
+        lo_ = lo;
+        g_lo_ = g_lo;
+        hi_ = hi;
+        g_hi_ = g_hi;
+        hi_y_ = y_hi;
+        hi_v_ = v_hi;
+        width_ = hi - lo;
+        trial_ = 0.5 * (lo + hi);
+    }
+
+    /// A step with no event at its end whose |theta| turns inside it: true if the cubic Hermite
+    /// peak comes within a margin of the fracture angle. The margin covers the interpolant's
+    /// O(dt^4) error (a tenth of the peak's rise above the ends, which is O(dt^2)) and the RK4
+    /// states' own; the located turning point then decides.
+    bool peak_may_break(double dt, double y1, double v1) const {
+        if (!intact(side_)) return false;
+        const double s = side_, v0 = thd_, y0 = th_;
+        if (!(s * v0 > 0.0 && s * v1 < 0.0)) return false;
+        const double peak = s * hermite_peak(dt, y0, v0, y1, v1);
+        const double ends = std::max(s * y0, s * y1);
+        return peak >= break_angle() - (1e-4 * break_angle() + 0.1 * (peak - ends));
+    }
+
+    void event_step(double dt, double y1, double v1, double a0) {
+        const double g = g_search(dt, y1, v1);
         if (!searching_) {
             if (g > 0.0) {
-                accept(dt, y1, v1, a0, Event::none);
+                if (!peak_may_break(dt, y1, v1)) {
+                    accept(dt, y1, v1, a0, Event::none);
+                    return;
+                }
+                // Locate the turning point (side * theta_dot = 0, positive at the start, <= 0 at
+                // the end) on re-run RK4 steps; its height decides the fracture.
+                peak_check_ = true;
+                start_search(Event::turn, 0.0, side_ * thd_, dt, side_ * v1, y1, v1);
                 return;
             }
             // The earliest event lies in (0, dt]: find it by Illinois (regula falsi that halves
             // the value of an end kept twice), each trial a fresh RK4 step from the same start,
             // so that the state at the event carries the RK4 local error only.
-            searching_ = true;
-            last_moved_ = 0;
-            iterations_ = 0;
-            lo_ = 0.0;
-            g_lo_ = NAN;  // no value at 0: the event functions may vanish there
-            hi_ = dt;
-            g_hi_ = g;
-            hi_y_ = y1;
-            hi_v_ = v1;
-            width_ = dt;
-            trial_ = 0.5 * dt;
+            start_search(Event::none, 0.0, NAN, dt, g, y1, v1);  // the functions may vanish at 0
             return;
         }
         ++iterations_;
@@ -537,8 +615,23 @@ private:
         const double tol = std::max(4.0 * DBL_EPSILON * (std::abs(t_) + hi_), 1e-12 * hi_);
         if (hi_ - lo_ <= tol || iterations_ >= 100) {
             searching_ = false;
+            const Event target = target_;
+            target_ = Event::none;  // the next step looks for every event again
+            if (peak_check_) {
+                peak_check_ = false;
+                const double gf = g_event(Event::fracture, hi_, hi_y_, hi_v_);
+                if (gf <= 0.0) {
+                    // The peak passes the fracture angle: the fracture lies in (0, peak].
+                    start_search(Event::fracture, 0.0, g_event(Event::fracture, 0.0, th_, thd_), hi_, gf, hi_y_, hi_v_);
+                    return;
+                }
+                // The spring holds: the step ends at the turning point (an ordinary step end).
+                clipped_ = false;
+                accept(hi_, hi_y_, hi_v_, a0, Event::none);
+                return;
+            }
             double gh;
-            const Event which = first_event(hi_, hi_y_, hi_v_, gh);
+            const Event which = target == Event::none ? first_event(hi_, hi_y_, hi_v_, gh) : target;
             accept(hi_, hi_y_, hi_v_, a0, which);
             return;
         }
@@ -552,18 +645,21 @@ private:
         trial_ = x;
     }
 
+    /// |theta|'s turning point inside a step from the cubic Hermite interpolant of (theta,
+    /// theta_dot), at the zero of the linear interpolant of theta_dot: error O(dt^4) in the peak.
+    static double hermite_peak(double dt, double y0, double v0, double y1, double v1) {
+        const double tau = v0 / (v0 - v1);
+        const double h00 = (1 + 2 * tau) * (1 - tau) * (1 - tau), h10 = tau * (1 - tau) * (1 - tau);
+        const double h01 = tau * tau * (3 - 2 * tau), h11 = tau * tau * (tau - 1);
+        return h00 * y0 + h10 * dt * v0 + h01 * y1 + h11 * dt * v1;
+    }
+
     /// Takes the state at t + dt as the new state and applies what happened there.
     void accept(double dt, double y1, double v1, double a0, Event e) {
         const double t0 = t_, y0 = th_, v0 = thd_;
         const double t1 = (e == Event::none && clipped_) ? boundary_ : t_ + dt;
-        // A turning point inside the step: its height from the cubic Hermite interpolant,
-        // at the zero of the linear interpolant of theta_dot (error O(dt^4) in the peak).
-        if (side_ * v0 > 0.0 && side_ * v1 < 0.0) {
-            const double tau = v0 / (v0 - v1);
-            const double h00 = (1 + 2 * tau) * (1 - tau) * (1 - tau), h10 = tau * (1 - tau) * (1 - tau);
-            const double h01 = tau * tau * (3 - 2 * tau), h11 = tau * tau * (tau - 1);
-            note_extremes(side_ * (h00 * y0 + h10 * dt * v0 + h01 * y1 + h11 * dt * v1));
-        }
+        // A turning point inside the step (one that reaches the fracture angle was located).
+        if (side_ * v0 > 0.0 && side_ * v1 < 0.0) note_extremes(side_ * hermite_peak(dt, y0, v0, y1, v1));
         note_extremes(std::min(side_ * y1, kHalfPi));
         if (obs_) observe(t0, y0, v0, a0, t1, y1, v1);
         t_ = t1;
@@ -595,6 +691,7 @@ private:
         const double approach = std::abs(thd_);
         ++r_.impacts_total;
         th_ = 0.0;
+        reset_reactions();
         if (approach < m_.v_threshold) {
             // The block is settling: the remaining impacts pile up in a time of order
             // 2 v / (p^2 alpha (1 - e)). Take it as at rest (physics.md §5).

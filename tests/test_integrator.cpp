@@ -202,6 +202,51 @@ TEST(Outcome, PaperSampleCaseAtOmegaRatio4Amplitude2_7) {
     EXPECT_TRUE(std::isnan(cons.t_overturn_s));
 }
 
+TEST(Fracture, APeakInsideAStepPastThetaFBreaksTheSpring) {
+    // Issue 7: |theta| passes theta_f and comes back inside one step. Located, the fracture
+    // gives the converged answer at the default step (48 per period) and at 128.
+    const CellModel grazing = make_cell_model(kBlock, anchorage(1), sine(4.0, 2.7932));
+    for (double n : {48.0, 128.0}) {
+        IntegratorSettings s;
+        s.steps_per_period = n;
+        const CellResult r = integrate_cell(grazing, s);
+        EXPECT_EQ(r.outcome, Outcome::overturned_impact) << n;
+        // The block lingers near the top after the fracture, where errors grow like e^(p t).
+        EXPECT_NEAR(r.t_overturn_s, 4.6663, 1e-3) << n;
+        EXPECT_EQ(r.broken, broken_left) << n;
+    }
+    // theta_f = alpha / 4: the default used to report max |theta| = 0.5687 alpha.
+    const CellModel quarter = make_cell_model(kBlock, anchorage(3), sine(8.965, 5.725));
+    IntegratorSettings fine;
+    fine.steps_per_period = 1024;
+    const CellResult d = integrate_cell(quarter, {}), f = integrate_cell(quarter, fine);
+    EXPECT_NEAR(f.max_rotation, 0.355595, 1e-6);
+    EXPECT_NEAR(d.max_rotation, f.max_rotation, 1e-6);
+    EXPECT_EQ(d.broken, f.broken);
+    EXPECT_EQ(d.impacts, f.impacts);
+    // An intact spring never carries more than F_u (to the located peak's accuracy).
+    EXPECT_LE(integrate_cell(grazing, {}).peak_force_ratio, 1.0 + 1e-9);
+}
+
+TEST(Fracture, ThePeakDecidesOnBothSidesOfThetaF) {
+    // The same pulse with theta_f raised just above the first peak: at 1 + 4e-5 the peak
+    // (1.000036 alpha converged) stays 4e-6 below it and the spring holds; at 1 + 3e-5 it
+    // breaks. Both need the located turning point: the steps' ends lie well below either.
+    const Pulse p = sine(4.0, 2.7932);
+    IntegratorSettings s;
+    s.energy_stop = false;
+    s.t_end_s = 3.0;
+    const double hold_ratio = 1.0 + 4e-5, break_ratio = 1.0 + 3e-5;
+    const CellResult hold =
+        integrate_cell(make_cell_model(kBlock, constant_anchorage(kBlock, kStrength, kBlock.alpha_rad * hold_ratio), p), s);
+    EXPECT_EQ(hold.broken, 0);
+    EXPECT_NEAR(hold.max_rotation, 1.000036, 1e-6);
+    const CellResult brk =
+        integrate_cell(make_cell_model(kBlock, constant_anchorage(kBlock, kStrength, kBlock.alpha_rad * break_ratio), p), s);
+    EXPECT_EQ(brk.broken, broken_left);
+    EXPECT_GT(brk.max_rotation, 1.04);  // past alpha with the spring gone
+}
+
 TEST(Outcome, EnergyStopGivesTheSameResultsAsIntegratingToRest) {
     IntegratorSettings on, off;
     off.energy_stop = false;
