@@ -340,6 +340,7 @@ private:
     ThreePointExtreme demand_, lift_;  ///< in-step extremes of |f_x / f_y| and f_y
     double react_kappa_ = -1.0;        ///< the spring of the points they hold
     double w_exc_ = 0.0, w_anch_ = 0.0;
+    double e_switch_ = 0.0;  ///< energy the K_min -> K_max switches put into the spring [J]
     CellResult r_{};
 
     bool in_pulse() const { return t_ < t_pulse_end_; }
@@ -378,10 +379,21 @@ private:
         if (in_pulse()) {
             // Sign of ax over the coming interval, taken at its middle: robust at the zeros.
             const double tz = std::min({m_.pulse.next_ax_zero(t_), t_pulse_end_, t_ + h_});
-            k_max_ = adaptive_uses_kmax(true, m_.pulse.ax(0.5 * (t_ + tz)), side_, 0.0, k_max_);
+            set_kmax(adaptive_uses_kmax(true, m_.pulse.ax(0.5 * (t_ + tz)), side_, 0.0, k_max_));
         } else {
-            k_max_ = adaptive_uses_kmax(false, 0.0, side_, thd_, k_max_);
+            set_kmax(adaptive_uses_kmax(false, 0.0, side_, thd_, k_max_));
         }
+    }
+
+    /// Switches the adaptive spring. A K_min -> K_max switch at nonzero elongation raises the
+    /// spring's potential (that of Eq. 8, physics.md §4) by I0 [V(K_max) - V(K_min)]: the
+    /// paper's law puts that energy into the block, and the histories report it.
+    void set_kmax(bool kmax) {
+        if (kmax && !k_max_ && th_ != 0.0 && intact(side_)) {
+            const double phi = std::abs(th_);
+            e_switch_ += m_.inertia * (spring_potential(m_, m_.kappa_max, phi) - spring_potential(m_, m_.kappa_min, phi));
+        }
+        k_max_ = kmax;
     }
 
     void note_extremes(double phi) {
@@ -649,9 +661,9 @@ private:
     /// theta_dot), at the zero of the linear interpolant of theta_dot: error O(dt^4) in the peak.
     static double hermite_peak(double dt, double y0, double v0, double y1, double v1) {
         const double tau = v0 / (v0 - v1);
-        const double h00 = (1 + 2 * tau) * (1 - tau) * (1 - tau), h10 = tau * (1 - tau) * (1 - tau);
-        const double h01 = tau * tau * (3 - 2 * tau), h11 = tau * tau * (tau - 1);
-        return h00 * y0 + h10 * dt * v0 + h01 * y1 + h11 * dt * v1;
+        double theta, theta_dot;  // theta_dot unused: theta'' at the ends is not needed here
+        StepEnds{0.0, y0, v0, 0.0, dt, y1, v1, 0.0}.at(tau * dt, theta, theta_dot);
+        return theta;
     }
 
     /// Takes the state at t + dt as the new state and applies what happened there.
@@ -673,7 +685,7 @@ private:
                 return;
             case Event::impact: return impact();
             case Event::turn:
-                k_max_ = false;
+                set_kmax(false);
                 return;
             case Event::none: break;
         }
@@ -736,8 +748,8 @@ private:
         if (m_.anchorage == AnchorageKind::adaptive) {
             // One step behind, as the paper's K(t+1) from the state at t; Eq. 22 on |theta|'s
             // change over the step.
-            if (in_pulse()) k_max_ = adaptive_uses_kmax(true, m_.pulse.ax(t_), side_, 0.0, k_max_);
-            else if (th_ != 0.0) k_max_ = adaptive_uses_kmax(false, 0.0, 1.0, std::abs(th_) - std::abs(y0), k_max_);
+            if (in_pulse()) set_kmax(adaptive_uses_kmax(true, m_.pulse.ax(t_), side_, 0.0, k_max_));
+            else if (th_ != 0.0) set_kmax(adaptive_uses_kmax(false, 0.0, 1.0, std::abs(th_) - std::abs(y0), k_max_));
         }
         if (t_ >= set_.t_end_s) finish(Outcome::safe);
     }
@@ -757,20 +769,12 @@ private:
         const double k = side_ == 0 || !intact(side_) ? 0.0 : (k_max_ ? m_.k_max_n_m : m_.k_min_n_m);
         s.k_left = side_ > 0 ? k : 0.0;
         s.k_right = side_ < 0 ? k : 0.0;
-        // Eq. 23-24 integrated by the trapezoidal rule over the step; work done on the block.
-        auto p_exc = [&](double t, double y, double v, bool end) {
-            const double ax = (end ? t <= t_pulse_end_ : t < t_pulse_end_) ? m_.pulse.ax(t) : 0.0;
-            return -m_.mass_kg * ax * m_.gravity * m_.radius_m * std::cos(m_.alpha - std::abs(y)) * v;
-        };
-        auto p_anc = [&](double y, double v) {
-            const double b = m_.half_width_m;
-            return -8.0 * b * b * k * std::sin(0.5 * std::abs(y)) * (y > 0 ? 1.0 : (y < 0 ? -1.0 : 0.0)) * v;
-        };
-        const double h = t1 - t0;
-        w_exc_ += 0.5 * h * (p_exc(t0, y0, v0, false) + p_exc(t1, y1, v1, true));
-        w_anch_ += 0.5 * h * (p_anc(y0, v0) + p_anc(y1, v1));
+        const Works w = step_works(m_, k, s, t1);
+        w_exc_ += w.excitation_j;
+        w_anch_ += w.anchorage_j;
         s.work_excitation = w_exc_;
         s.work_anchorage = w_anch_;
+        s.switch_energy = e_switch_;
         s.impacts = r_.impacts;
         (*obs_)(s);
     }

@@ -35,6 +35,19 @@ Anchorage anchorage(int kind) {
     }
 }
 
+/// A sine-pulse run to time t for the convergence tests, and the reference setting (4096 steps
+/// per period) they compare with.
+struct ConvergenceCase {
+    int anchorage;
+    double w, a, t;
+    CellModel model() const { return make_cell_model(kBlock, ::anchorage(anchorage), sine(w, a)); }
+};
+IntegratorSettings reference_settings() {
+    IntegratorSettings s;
+    s.steps_per_period = 4096;
+    return s;
+}
+
 /// theta at exactly t_end, and the impacts counted on the way.
 double theta_at(const CellModel& m, IntegratorSettings s, double t_end, int* impacts = nullptr) {
     s.t_end_s = t_end;
@@ -73,11 +86,9 @@ TEST(Housner, ConstantAccelerationCriticalDurationUnderLinearisedEquations) {
 
 TEST(Convergence, FourthOrderThroughImpacts) {
     // Free block (3 impacts by t = 4 s) and adaptive block (5 impacts by t = 5 s).
-    struct Case { int anchorage; double w, a, t; };
-    for (const Case c : {Case{0, 6.0, 4.0, 4.0}, Case{2, 4.0, 2.7, 5.0}}) {
-        const CellModel m = make_cell_model(kBlock, anchorage(c.anchorage), sine(c.w, c.a));
-        IntegratorSettings s;
-        s.steps_per_period = 4096;
+    for (const ConvergenceCase c : {ConvergenceCase{0, 6.0, 4.0, 4.0}, ConvergenceCase{2, 4.0, 2.7, 5.0}}) {
+        const CellModel m = c.model();
+        IntegratorSettings s = reference_settings();
         int impacts = 0;
         const double ref = theta_at(m, s, c.t, &impacts);
         EXPECT_GE(impacts, 3);
@@ -89,6 +100,35 @@ TEST(Convergence, FourthOrderThroughImpacts) {
         // halving the step divides the error by 2^4 = 16
         EXPECT_NEAR(err[0] / err[1], 16.0, 3.0) << "anchorage " << c.anchorage;
         EXPECT_NEAR(err[1] / err[2], 16.0, 3.0) << "anchorage " << c.anchorage;
+    }
+}
+
+TEST(Convergence, WorksAtTheSampleTimesAreFourthOrderLikeTheta) {
+    // Eq. 23-24 sampled every 0.01 s (sample times fall inside steps): the largest error over
+    // the samples, through impacts, falls by 2^4 when the step halves, as theta's does.
+    for (const ConvergenceCase c : {ConvergenceCase{1, 4.0, 2.7, 5.0}, ConvergenceCase{2, 4.0, 2.7, 5.0}}) {
+        const CellModel m = c.model();
+        IntegratorSettings s = reference_settings();
+        const History ref = sample_history(m, s, 0.01, c.t);
+        ASSERT_GE(ref.result.impacts, 3);
+        auto err = [&](double n) {
+            s.steps_per_period = n;
+            const History h = sample_history(m, s, 0.01, c.t);
+            EXPECT_EQ(h.t.size(), ref.t.size());
+            double exc = 0.0, anc = 0.0, scale = 0.0;
+            for (std::size_t i = 0; i < ref.t.size(); ++i) {
+                exc = std::max(exc, std::abs(h.w_excitation[i] - ref.w_excitation[i]));
+                anc = std::max(anc, std::abs(h.w_anchorage[i] - ref.w_anchorage[i]));
+                scale = std::max(scale, std::abs(ref.w_excitation[i]));
+            }
+            EXPECT_GT(scale, 1e3);  // kJ of work: the errors below are not at rounding level
+            return std::pair{exc, anc};
+        };
+        const auto e64 = err(64), e128 = err(128), e256 = err(256);
+        EXPECT_NEAR(e64.first / e128.first, 16.0, 4.0) << "anchorage " << c.anchorage;
+        EXPECT_NEAR(e128.first / e256.first, 16.0, 4.0) << "anchorage " << c.anchorage;
+        EXPECT_NEAR(e64.second / e128.second, 16.0, 4.0) << "anchorage " << c.anchorage;
+        EXPECT_NEAR(e128.second / e256.second, 16.0, 4.0) << "anchorage " << c.anchorage;
     }
 }
 
