@@ -341,6 +341,7 @@ private:
     double react_kappa_ = -1.0;        ///< the spring of the points they hold
     double w_exc_ = 0.0, w_anch_ = 0.0;
     double e_switch_ = 0.0;  ///< energy the K_min -> K_max switches put into the spring [J]
+    std::int64_t scans_ = 0;  ///< ground samples scanned outside RK4 steps (rest, uplift)
     CellResult r_{};
 
     bool in_pulse() const { return t_ < t_pulse_end_; }
@@ -450,32 +451,47 @@ private:
         auto demand = [&](double t) { return std::abs(m_.pulse.ax(t)) / (1.0 + m_.pulse.ay(t)); };
         mu_ = std::max({mu_, demand(t0), demand(t1 < t_pulse_end_ ? t1 : std::nextafter(t1, t0))});
         if (m_.pulse.kind == PulseKind::record) {  // linear between samples: the samples bound it
-            for (double t = m_.pulse.next_sample(t0); t < t1; t = m_.pulse.next_sample(t)) mu_ = std::max(mu_, demand(t));
+            for (double t = m_.pulse.next_sample(t0); t < t1 && charge(); t = m_.pulse.next_sample(t)) mu_ = std::max(mu_, demand(t));
             return;
         }
         if (m_.pulse.kind != PulseKind::sine) return;
         const double w = m_.pulse.omega, ph = m_.pulse.phase, period = 2.0 * M_PI / w;
         for (double k = std::ceil(((w * t0 + ph) - M_PI / 2) / M_PI);; k += 1.0) {
             const double tpk = ((M_PI / 2 + k * M_PI) - ph) / w;
-            if (tpk >= t1) break;
+            if (!(tpk < t1) || !charge()) break;  // NaN (omega_p overflowed) ends it too
             if (tpk > t0) mu_ = std::max(mu_, demand(tpk));
         }
         if (m_.pulse.ay_g != 0.0)
-            for (double t = t0; t < t1; t += period / 512.0) mu_ = std::max(mu_, demand(t));
+            for (double t = t0; t < t1 && charge(); t += period / 512.0) mu_ = std::max(mu_, demand(t));
+    }
+
+    /// One ground sample scanned outside the RK4 steps (uplift search, friction demand at rest),
+    /// counted against the step cap with the steps: a scan that cannot progress (omega_p so
+    /// large that t + T/512 == t, or NaN) ends as not_converged within the cap like any runaway
+    /// cell. A stop request is honoured here too, as between batch steps. False: out of budget.
+    bool charge() {
+        ++scans_;
+        if ((scans_ & 4095) == 0 && set_.stop_requested && set_.stop_requested()) throw Interrupted();
+        if (r_.steps + scans_ < set_.max_steps) return true;
+        finish(Outcome::not_converged);
+        return false;
     }
 
     /// From rest: wait for the ground to lift a corner (Eq. 1), or finish safe.
     void leave_rest() {
         const double tu = in_pulse() ? next_uplift(t_, std::min(t_pulse_end_, set_.t_end_s)) : INFINITY;
+        if (done_) return;
         if (!std::isfinite(tu)) {
             const double t_stop = std::min(std::max(t_, t_pulse_end_), set_.t_end_s);
             note_rest_demand(t_, t_stop);
+            if (done_) return;
             observe_rest(t_stop);
             t_ = t_stop;
             finish(Outcome::safe);
             return;
         }
         note_rest_demand(t_, tu);
+        if (done_) return;
         observe_rest(tu);
         t_ = tu;
         th_ = thd_ = 0.0;
@@ -493,13 +509,14 @@ private:
     }
 
     /// First time in [t, t_stop) at which the block uplifts, or +inf.
-    double next_uplift(double t, double t_stop) const {
+    double next_uplift(double t, double t_stop) {
         if (m_.uplifts(t)) return t;
         if (m_.never_uplifts()) return INFINITY;  // decided without integrating
         if (m_.pulse.kind == PulseKind::constant) return INFINITY;  // constant ground: no change
         if (m_.pulse.kind == PulseKind::record) {
             // |ax| is largest at a segment's ends: the first sample that uplifts brackets it.
             for (double prev = t, next = m_.pulse.next_sample(t); prev < t_stop; prev = next, next = m_.pulse.next_sample(next)) {
+                if (!charge()) return INFINITY;
                 next = std::min(next, t_stop);
                 if (next < t_stop && m_.uplifts(next)) return bisect_uplift(prev, next);
             }
@@ -509,6 +526,7 @@ private:
         const double dt = period / 512.0;
         double prev = t;
         while (prev < t_stop) {
+            if (!charge()) return INFINITY;
             double next = std::min(prev + dt, t_stop);
             // A peak of |ax| in (prev, next] catches a pulse barely above the threshold.
             const double w = m_.pulse.omega, ph = m_.pulse.phase;
