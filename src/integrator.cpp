@@ -420,18 +420,9 @@ private:
         react_kappa_ = kappa();
         const bool acting = in_pulse();
         const double ax = acting ? m_.pulse.ax(t_) : 0.0, ay = acting ? m_.pulse.ay(t_) : 0.0;
-        double sa, ca, sh, ch;
-        fastmath::sincos(m_.alpha - phi, sa, ca);
-        fastmath::sincos(0.5 * phi, sh, ch);
-        const bool lin = m_.equations == Equations::linearised;
-        // phi'' = s theta'' (the equation of motion on side s, written on phi)
-        const double phidd = -m_.p2 * ((1.0 + ay) * (lin ? m_.alpha - phi : sa) + s * ax * (lin ? 1.0 : ca)) -
-                             kappa() * (lin ? 0.5 * phi : sh);
-        const double w2 = thd_ * thd_, r_g = m_.radius_m / m_.gravity;
-        const double fx = ax + s * r_g * (ca * phidd + sa * w2);
-        double fy = 1.0 + ay + r_g * (sa * phidd - ca * w2);
-        if (intact(side_))
-            fy += (k_max_ ? m_.k_max_n_m : m_.k_min_n_m) * 4.0 * m_.half_width_m * (sh / ch) / (m_.mass_kg * m_.gravity);
+        const double k = intact(side_) ? (k_max_ ? m_.k_max_n_m : m_.k_min_n_m) : 0.0;
+        const BaseReactions f = base_reactions(m_, side_, kappa(), k, ax, ay, th_, thd_);
+        const double fx = f.fx, fy = f.fy;
         if (fy <= 0.0) pivot_up_ = true;
         else mu_ = std::max(mu_, demand_.add(t_, std::abs(fx) / fy, 1.0));
         if (lift_.add(t_, fy, -1.0) <= 0.0) pivot_up_ = true;

@@ -394,3 +394,42 @@ TEST(Reactions, RockingNeedsAtLeastTanAlphaAndMatchesTheMotionOfTheCentreOfMass)
     EXPECT_LE(worst, r.mu_required * (1 + 2e-3));  // sampled demand never exceeds the reported one
     EXPECT_GE(worst, r.mu_required * (1 - 2e-2));  // and comes close to it
 }
+
+TEST(Reactions, InclinedSpringForceMatchesAVectorEvaluation) {
+    // Issue 7, item 5. Independently of base_reactions: the spring's line from the coordinates
+    // of the lifted corner and of its anchor, its magnitude from the Eq. 8 moment about the
+    // pivot, the centre of mass's acceleration from rigid-body kinematics (a = phi'' x r -
+    // phi'^2 r, rotation -s phi about the pivot); f = m (a_ground + a_cm) - spring - weight.
+    const CellModel m = make_cell_model(kBlock, anchorage(3), sine(4.0, 2.7));
+    const double b = kBlock.half_width_m(), h = kBlock.half_height_m(), mg = kBlock.mass_kg * kBlock.gravity;
+    double worst_spring_fx = 0.0;
+    for (int side : {1, -1}) {
+        for (double phi : {0.01, 0.05, 0.1, 0.2}) {
+            for (double thd : {0.0, 0.3, -0.4}) {
+                const double ax = 0.12, ay = 0.05, theta = side * phi, k = m.k_max_n_m;
+                const BaseReactions f = base_reactions(m, side, m.kappa_max, k, ax, ay, theta, thd);
+                // Body points relative to the pivot (x = s b), rotated by beta = -s phi.
+                const double beta = -side * phi, c = std::cos(beta), sn = std::sin(beta);
+                auto rot = [&](double x, double y) { return std::pair{x * c - y * sn, x * sn + y * c}; };
+                const auto [rx, ry] = rot(-side * b, h);               // centre of mass
+                const auto [cx, cy] = rot(-side * 2.0 * b, 0.0);       // lifted corner
+                const double dx = -side * 2.0 * b - cx, dy = -cy;      // corner -> anchor (x = -s b)
+                const double len = std::hypot(dx, dy), ux = dx / len, uy = dy / len;
+                // |moment of a unit force along u about the pivot| = |r_corner x u|
+                const double arm = std::abs(cx * uy - cy * ux);
+                const double F = 8.0 * b * b * k * std::sin(0.5 * phi) / arm;
+                // Angular acceleration of the body: beta'' = -s phi'' = -theta''.
+                const double thdd = rocking_acceleration(m, side, m.kappa_max, ax, ay, theta);
+                const double bdd = -thdd, bd = -thd;
+                const double acx = -bdd * ry - bd * bd * rx, acy = bdd * rx - bd * bd * ry;
+                const double g = kBlock.gravity;
+                const double fx = (kBlock.mass_kg * (ax * g + acx) - F * ux) / mg;
+                const double fy = (kBlock.mass_kg * (ay * g + acy) - F * uy + mg) / mg;
+                EXPECT_NEAR(f.fx, fx, 1e-12) << side << " " << phi << " " << thd;
+                EXPECT_NEAR(f.fy, fy, 1e-12) << side << " " << phi << " " << thd;
+                worst_spring_fx = std::max(worst_spring_fx, std::abs(F * ux) / mg);
+            }
+        }
+    }
+    EXPECT_GT(worst_spring_fx, 1e-3);  // the horizontal pull matters at these angles
+}
