@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "rocksweep/energy.hpp"
 #include "rocksweep/errors.hpp"
 
 namespace rocksweep {
@@ -16,7 +17,7 @@ History sample_history(const CellModel& cell, IntegratorSettings settings, doubl
     auto sample_time = [&](std::size_t i) { return static_cast<double>(i) * output_dt_s; };
     StepRecord last{};
     bool any = false;
-    auto push = [&](double t, double th, double thd, const StepRecord& s) {
+    auto push = [&](double t, double th, double thd, const StepRecord& s, const Works& since_t1) {
         h.t.push_back(t);
         h.theta.push_back(th);
         h.theta_dot.push_back(thd);
@@ -24,34 +25,35 @@ History sample_history(const CellModel& cell, IntegratorSettings settings, doubl
         h.k_right.push_back(s.k_right);
         const double ax = t < cell.pulse.end_time() ? cell.pulse.ax(t) : 0.0;
         h.ground_acc.push_back(ax * cell.gravity);
-        // Works are kept per step; between step ends they follow linearly.
-        h.w_excitation.push_back(s.work_excitation);
-        h.w_anchorage.push_back(s.work_anchorage);
+        h.w_excitation.push_back(s.work_excitation - since_t1.excitation_j);
+        h.w_anchorage.push_back(s.work_anchorage - since_t1.anchorage_j);
+        h.e_switch.push_back(s.switch_energy);
     };
     const StepObserver obs = [&](const StepRecord& s) {
-        const double dt = s.t1 - s.t0;
         while (sample_time(k) <= s.t1 && sample_time(k) <= t_end_s) {
             const double t = sample_time(k);
             if (t < s.t0) { ++k; continue; }
-            // Cubic Hermite on (theta, theta_dot) and on (theta_dot, theta'').
-            const double u = dt > 0.0 ? (t - s.t0) / dt : 1.0;
-            const double h00 = (1 + 2 * u) * (1 - u) * (1 - u), h10 = u * (1 - u) * (1 - u);
-            const double h01 = u * u * (3 - 2 * u), h11 = u * u * (u - 1);
-            const double th = h00 * s.theta0 + h10 * dt * s.theta_dot0 + h01 * s.theta1 + h11 * dt * s.theta_dot1;
-            const double thd = h00 * s.theta_dot0 + h10 * dt * s.acc0 + h01 * s.theta_dot1 + h11 * dt * s.acc1;
-            push(t, th, thd, s);
+            double th, thd;
+            s.at(t, th, thd);
+            // The step's works from t to its end, taken off the cumulative value at t1.
+            const Works all = step_works(cell, s.k_left + s.k_right, s, s.t1);
+            const Works to_t = step_works(cell, s.k_left + s.k_right, s, t);
+            push(t, th, thd, s, Works{all.excitation_j - to_t.excitation_j, all.anchorage_j - to_t.anchorage_j});
             ++k;
         }
         last = s;
         any = true;
     };
     h.result = integrate_cell(cell, settings, obs);
+    // No switch follows the last step with the spring stretched: the run ends there (t_end,
+    // overturning) or the block is at rest.
+    h.switch_energy_j = any ? last.switch_energy : 0.0;
     // A block at rest, or lying on its side, keeps its last state to the end of the record.
     if (any && std::isnan(h.result.t_overturn_s)) {
         StepRecord rest = last;
         rest.k_left = rest.k_right = 0.0;
         while (sample_time(k) <= t_end_s * (1 + 1e-12)) {
-            push(sample_time(k), last.theta1, last.theta_dot1, rest);
+            push(sample_time(k), last.theta1, last.theta_dot1, rest, Works{});
             ++k;
         }
     }

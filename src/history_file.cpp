@@ -87,6 +87,16 @@ void write_h5_contents(const h5::File& f, const History& h, const std::vector<Co
             h5::attach_scale(ds, t, 0);
         }
     }
+    // The energy the adaptive law's switches injected (physics.md §4). HDF5 only: the CSV keeps
+    // its columns. A History built without it (empty) has none to write.
+    if (h.e_switch.size() == h.t.size() && t.valid()) {
+        h5::Dataset ds = h5::write_1d<double>(f, "e_switch", h.e_switch);
+        h5::write_attribute(ds, "units", "J");
+        h5::write_attribute(ds, "long_name",
+                            "cumulative energy put into the spring by the adaptive law's K_min -> K_max switches at nonzero elongation");
+        h5::attach_scale(ds, t, 0);
+        h5::write_attribute(f, "switch_energy", h.switch_energy_j);
+    }
 }
 
 struct FileCloser {

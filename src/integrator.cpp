@@ -208,6 +208,35 @@ struct Batch {
 
 enum class Event { none, overturn, fracture, impact, turn };
 
+/// The extreme of a smooth quantity between accepted states, from the parabola through the
+/// last three of one rocking phase: checks made only at step ends miss an extreme inside a
+/// step by O(dt^2); the vertex of the parabola misses it by O(dt^3).
+class ThreePointExtreme {
+public:
+    void reset() { n_ = 0; }
+    /// Adds (t, f); returns the parabola's vertex value if the middle point is a local extreme
+    /// of the kind `sign` (+1 max, -1 min) and the vertex lies between the outer points, else f.
+    double add(double t, double f, double sign) {
+        if (n_ == 3) { t_[0] = t_[1]; f_[0] = f_[1]; t_[1] = t_[2]; f_[1] = f_[2]; n_ = 2; }
+        t_[n_] = t; f_[n_] = f; ++n_;
+        if (n_ < 3) return f;
+        // f - f1 = a u^2 + b u through (u0, f0 - f1), (0, 0), (u2, f2 - f1), u = t - t1.
+        const double u0 = t_[0] - t_[1], u2 = t_[2] - t_[1], g0 = f_[0] - f_[1], g2 = f_[2] - f_[1];
+        if (!(u0 < 0.0 && u2 > 0.0) || !(sign * g0 < 0.0 && sign * g2 <= 0.0)) return f;
+        const double det = u0 * u2 * (u0 - u2);
+        const double a = (g0 * u2 - g2 * u0) / det, b = (u0 * u0 * g2 - u2 * u2 * g0) / det;
+        if (!(sign * a < 0.0)) return f;
+        const double u = -b / (2.0 * a);
+        if (!(u > u0 && u < u2)) return f;
+        const double v = f_[1] - b * b / (4.0 * a);
+        return sign * v > sign * f ? v : f;
+    }
+
+private:
+    double t_[3] = {0, 0, 0}, f_[3] = {0, 0, 0};
+    int n_ = 0;
+};
+
 /// The state machine of one cell: what its next trial step is, and what the step's end means.
 class Lane {
 public:
@@ -297,13 +326,22 @@ private:
     bool clipped_ = false;
     // event search on the current step: the root lies in (lo, hi]
     bool searching_ = false;
+    /// What the search locates: Event::none = the earliest of all events at the step's end;
+    /// Event::turn with peak_check_ = the in-step turning point of a step whose interpolated
+    /// peak reaches the fracture angle (a grazing fracture that the step's ends do not see).
+    Event target_ = Event::none;
+    bool peak_check_ = false;
     double lo_ = 0.0, hi_ = 0.0, g_lo_ = 0.0, g_hi_ = 0.0, trial_ = 0.0, width_ = 0.0;
     int last_moved_ = 0, iterations_ = 0;
     double hi_y_ = 0.0, hi_v_ = 0.0;
     double max_phi_ = 0.0;
     double mu_ = 0.0;           ///< max |f_x / f_y| so far
     bool pivot_up_ = false;     ///< f_y < 0 seen
+    ThreePointExtreme demand_, lift_;  ///< in-step extremes of |f_x / f_y| and f_y
+    double react_kappa_ = -1.0;        ///< the spring of the points they hold
     double w_exc_ = 0.0, w_anch_ = 0.0;
+    double e_switch_ = 0.0;  ///< energy the K_min -> K_max switches put into the spring [J]
+    std::int64_t scans_ = 0;  ///< ground samples scanned outside RK4 steps (rest, uplift)
     CellResult r_{};
 
     bool in_pulse() const { return t_ < t_pulse_end_; }
@@ -342,10 +380,21 @@ private:
         if (in_pulse()) {
             // Sign of ax over the coming interval, taken at its middle: robust at the zeros.
             const double tz = std::min({m_.pulse.next_ax_zero(t_), t_pulse_end_, t_ + h_});
-            k_max_ = adaptive_uses_kmax(true, m_.pulse.ax(0.5 * (t_ + tz)), side_, 0.0, k_max_);
+            set_kmax(adaptive_uses_kmax(true, m_.pulse.ax(0.5 * (t_ + tz)), side_, 0.0, k_max_));
         } else {
-            k_max_ = adaptive_uses_kmax(false, 0.0, side_, thd_, k_max_);
+            set_kmax(adaptive_uses_kmax(false, 0.0, side_, thd_, k_max_));
         }
+    }
+
+    /// Switches the adaptive spring. A K_min -> K_max switch at nonzero elongation raises the
+    /// spring's potential (that of Eq. 8, physics.md §4) by I0 [V(K_max) - V(K_min)]: the
+    /// paper's law puts that energy into the block, and the histories report it.
+    void set_kmax(bool kmax) {
+        if (kmax && !k_max_ && th_ != 0.0 && intact(side_)) {
+            const double phi = std::abs(th_);
+            e_switch_ += m_.inertia * (spring_potential(m_, m_.kappa_max, phi) - spring_potential(m_, m_.kappa_min, phi));
+        }
+        k_max_ = kmax;
     }
 
     void note_extremes(double phi) {
@@ -365,23 +414,23 @@ private:
         const double s = side_, phi = side_ * th_;
         // Past alpha the block is beyond its static stability limit: a fall to the ground needs
         // ever more friction (f_y -> 0 as theta_dot grows) and says nothing about survival.
-        if (phi > m_.alpha) return;
+        if (phi > m_.alpha) return reset_reactions();
+        // A spring that breaks or switches makes f_y jump: no parabola across the jump.
+        if (kappa() != react_kappa_) reset_reactions();
+        react_kappa_ = kappa();
         const bool acting = in_pulse();
         const double ax = acting ? m_.pulse.ax(t_) : 0.0, ay = acting ? m_.pulse.ay(t_) : 0.0;
-        double sa, ca, sh, ch;
-        fastmath::sincos(m_.alpha - phi, sa, ca);
-        fastmath::sincos(0.5 * phi, sh, ch);
-        const bool lin = m_.equations == Equations::linearised;
-        // phi'' = s theta'' (the equation of motion on side s, written on phi)
-        const double phidd = -m_.p2 * ((1.0 + ay) * (lin ? m_.alpha - phi : sa) + s * ax * (lin ? 1.0 : ca)) -
-                             kappa() * (lin ? 0.5 * phi : sh);
-        const double w2 = thd_ * thd_, r_g = m_.radius_m / m_.gravity;
-        const double fx = ax + s * r_g * (ca * phidd + sa * w2);
-        double fy = 1.0 + ay + r_g * (sa * phidd - ca * w2);
-        if (intact(side_))
-            fy += (k_max_ ? m_.k_max_n_m : m_.k_min_n_m) * 4.0 * m_.half_width_m * (sh / ch) / (m_.mass_kg * m_.gravity);
+        const double k = intact(side_) ? (k_max_ ? m_.k_max_n_m : m_.k_min_n_m) : 0.0;
+        const BaseReactions f = base_reactions(m_, side_, kappa(), k, ax, ay, th_, thd_);
+        const double fx = f.fx, fy = f.fy;
         if (fy <= 0.0) pivot_up_ = true;
-        else mu_ = std::max(mu_, std::abs(fx) / fy);
+        else mu_ = std::max(mu_, demand_.add(t_, std::abs(fx) / fy, 1.0));
+        if (lift_.add(t_, fy, -1.0) <= 0.0) pivot_up_ = true;
+    }
+    /// A new rocking phase (impact, rest, past alpha): no parabola across it.
+    void reset_reactions() {
+        demand_.reset();
+        lift_.reset();
     }
 
     /// At rest on the moving ground the base carries m (g + ay) and m ax: the friction needed is
@@ -393,32 +442,47 @@ private:
         auto demand = [&](double t) { return std::abs(m_.pulse.ax(t)) / (1.0 + m_.pulse.ay(t)); };
         mu_ = std::max({mu_, demand(t0), demand(t1 < t_pulse_end_ ? t1 : std::nextafter(t1, t0))});
         if (m_.pulse.kind == PulseKind::record) {  // linear between samples: the samples bound it
-            for (double t = m_.pulse.next_sample(t0); t < t1; t = m_.pulse.next_sample(t)) mu_ = std::max(mu_, demand(t));
+            for (double t = m_.pulse.next_sample(t0); t < t1 && charge(); t = m_.pulse.next_sample(t)) mu_ = std::max(mu_, demand(t));
             return;
         }
         if (m_.pulse.kind != PulseKind::sine) return;
         const double w = m_.pulse.omega, ph = m_.pulse.phase, period = 2.0 * M_PI / w;
         for (double k = std::ceil(((w * t0 + ph) - M_PI / 2) / M_PI);; k += 1.0) {
             const double tpk = ((M_PI / 2 + k * M_PI) - ph) / w;
-            if (tpk >= t1) break;
+            if (!(tpk < t1) || !charge()) break;  // NaN (omega_p overflowed) ends it too
             if (tpk > t0) mu_ = std::max(mu_, demand(tpk));
         }
         if (m_.pulse.ay_g != 0.0)
-            for (double t = t0; t < t1; t += period / 512.0) mu_ = std::max(mu_, demand(t));
+            for (double t = t0; t < t1 && charge(); t += period / 512.0) mu_ = std::max(mu_, demand(t));
+    }
+
+    /// One ground sample scanned outside the RK4 steps (uplift search, friction demand at rest),
+    /// counted against the step cap with the steps: a scan that cannot progress (omega_p so
+    /// large that t + T/512 == t, or NaN) ends as not_converged within the cap like any runaway
+    /// cell. A stop request is honoured here too, as between batch steps. False: out of budget.
+    bool charge() {
+        ++scans_;
+        if ((scans_ & 4095) == 0 && set_.stop_requested && set_.stop_requested()) throw Interrupted();
+        if (r_.steps + scans_ < set_.max_steps) return true;
+        finish(Outcome::not_converged);
+        return false;
     }
 
     /// From rest: wait for the ground to lift a corner (Eq. 1), or finish safe.
     void leave_rest() {
         const double tu = in_pulse() ? next_uplift(t_, std::min(t_pulse_end_, set_.t_end_s)) : INFINITY;
+        if (done_) return;
         if (!std::isfinite(tu)) {
             const double t_stop = std::min(std::max(t_, t_pulse_end_), set_.t_end_s);
             note_rest_demand(t_, t_stop);
+            if (done_) return;
             observe_rest(t_stop);
             t_ = t_stop;
             finish(Outcome::safe);
             return;
         }
         note_rest_demand(t_, tu);
+        if (done_) return;
         observe_rest(tu);
         t_ = tu;
         th_ = thd_ = 0.0;
@@ -436,13 +500,14 @@ private:
     }
 
     /// First time in [t, t_stop) at which the block uplifts, or +inf.
-    double next_uplift(double t, double t_stop) const {
+    double next_uplift(double t, double t_stop) {
         if (m_.uplifts(t)) return t;
         if (m_.never_uplifts()) return INFINITY;  // decided without integrating
         if (m_.pulse.kind == PulseKind::constant) return INFINITY;  // constant ground: no change
         if (m_.pulse.kind == PulseKind::record) {
             // |ax| is largest at a segment's ends: the first sample that uplifts brackets it.
             for (double prev = t, next = m_.pulse.next_sample(t); prev < t_stop; prev = next, next = m_.pulse.next_sample(next)) {
+                if (!charge()) return INFINITY;
                 next = std::min(next, t_stop);
                 if (next < t_stop && m_.uplifts(next)) return bisect_uplift(prev, next);
             }
@@ -452,6 +517,7 @@ private:
         const double dt = period / 512.0;
         double prev = t;
         while (prev < t_stop) {
+            if (!charge()) return INFINITY;
             double next = std::min(prev + dt, t_stop);
             // A peak of |ax| in (prev, next] catches a pulse barely above the threshold.
             const double w = m_.pulse.omega, ph = m_.pulse.phase;
@@ -496,28 +562,61 @@ private:
         return which;
     }
 
-    void event_step(double dt, double y1, double v1, double a0) {
+    /// The value the current search drives to zero.
+    double g_search(double d, double y, double v) const {
         double g;
-        first_event(dt, y1, v1, g);
+        if (target_ == Event::none) first_event(d, y, v, g);
+        else g = g_event(target_, d, y, v);
+        return g;
+    }
+
+    /// Starts an Illinois search for a root in (lo, hi]; g_lo may be NaN (no value at lo).
+    void start_search(Event target, double lo, double g_lo, double hi, double g_hi, double y_hi, double v_hi) {
+        searching_ = true;
+        target_ = target;
+        last_moved_ = 0;
+        iterations_ = 0;
+        lo_ = lo;
+        g_lo_ = g_lo;
+        hi_ = hi;
+        g_hi_ = g_hi;
+        hi_y_ = y_hi;
+        hi_v_ = v_hi;
+        width_ = hi - lo;
+        trial_ = 0.5 * (lo + hi);
+    }
+
+    /// A step with no event at its end whose |theta| turns inside it: true if the cubic Hermite
+    /// peak comes within a margin of the fracture angle. The margin covers the interpolant's
+    /// O(dt^4) error (a tenth of the peak's rise above the ends, which is O(dt^2)) and the RK4
+    /// states' own; the located turning point then decides.
+    bool peak_may_break(double dt, double y1, double v1) const {
+        if (!intact(side_)) return false;
+        const double s = side_, v0 = thd_, y0 = th_;
+        if (!(s * v0 > 0.0 && s * v1 < 0.0)) return false;
+        const double peak = s * hermite_peak(dt, y0, v0, y1, v1);
+        const double ends = std::max(s * y0, s * y1);
+        return peak >= break_angle() - (1e-4 * break_angle() + 0.1 * (peak - ends));
+    }
+
+    void event_step(double dt, double y1, double v1, double a0) {
+        const double g = g_search(dt, y1, v1);
         if (!searching_) {
             if (g > 0.0) {
-                accept(dt, y1, v1, a0, Event::none);
+                if (!peak_may_break(dt, y1, v1)) {
+                    accept(dt, y1, v1, a0, Event::none);
+                    return;
+                }
+                // Locate the turning point (side * theta_dot = 0, positive at the start, <= 0 at
+                // the end) on re-run RK4 steps; its height decides the fracture.
+                peak_check_ = true;
+                start_search(Event::turn, 0.0, side_ * thd_, dt, side_ * v1, y1, v1);
                 return;
             }
             // The earliest event lies in (0, dt]: find it by Illinois (regula falsi that halves
             // the value of an end kept twice), each trial a fresh RK4 step from the same start,
             // so that the state at the event carries the RK4 local error only.
-            searching_ = true;
-            last_moved_ = 0;
-            iterations_ = 0;
-            lo_ = 0.0;
-            g_lo_ = NAN;  // no value at 0: the event functions may vanish there
-            hi_ = dt;
-            g_hi_ = g;
-            hi_y_ = y1;
-            hi_v_ = v1;
-            width_ = dt;
-            trial_ = 0.5 * dt;
+            start_search(Event::none, 0.0, NAN, dt, g, y1, v1);  // the functions may vanish at 0
             return;
         }
         ++iterations_;
@@ -537,8 +636,23 @@ private:
         const double tol = std::max(4.0 * DBL_EPSILON * (std::abs(t_) + hi_), 1e-12 * hi_);
         if (hi_ - lo_ <= tol || iterations_ >= 100) {
             searching_ = false;
+            const Event target = target_;
+            target_ = Event::none;  // the next step looks for every event again
+            if (peak_check_) {
+                peak_check_ = false;
+                const double gf = g_event(Event::fracture, hi_, hi_y_, hi_v_);
+                if (gf <= 0.0) {
+                    // The peak passes the fracture angle: the fracture lies in (0, peak].
+                    start_search(Event::fracture, 0.0, g_event(Event::fracture, 0.0, th_, thd_), hi_, gf, hi_y_, hi_v_);
+                    return;
+                }
+                // The spring holds: the step ends at the turning point (an ordinary step end).
+                clipped_ = false;
+                accept(hi_, hi_y_, hi_v_, a0, Event::none);
+                return;
+            }
             double gh;
-            const Event which = first_event(hi_, hi_y_, hi_v_, gh);
+            const Event which = target == Event::none ? first_event(hi_, hi_y_, hi_v_, gh) : target;
             accept(hi_, hi_y_, hi_v_, a0, which);
             return;
         }
@@ -552,18 +666,21 @@ private:
         trial_ = x;
     }
 
+    /// |theta|'s turning point inside a step from the cubic Hermite interpolant of (theta,
+    /// theta_dot), at the zero of the linear interpolant of theta_dot: error O(dt^4) in the peak.
+    static double hermite_peak(double dt, double y0, double v0, double y1, double v1) {
+        const double tau = v0 / (v0 - v1);
+        double theta, theta_dot;  // theta_dot unused: theta'' at the ends is not needed here
+        StepEnds{0.0, y0, v0, 0.0, dt, y1, v1, 0.0}.at(tau * dt, theta, theta_dot);
+        return theta;
+    }
+
     /// Takes the state at t + dt as the new state and applies what happened there.
     void accept(double dt, double y1, double v1, double a0, Event e) {
         const double t0 = t_, y0 = th_, v0 = thd_;
         const double t1 = (e == Event::none && clipped_) ? boundary_ : t_ + dt;
-        // A turning point inside the step: its height from the cubic Hermite interpolant,
-        // at the zero of the linear interpolant of theta_dot (error O(dt^4) in the peak).
-        if (side_ * v0 > 0.0 && side_ * v1 < 0.0) {
-            const double tau = v0 / (v0 - v1);
-            const double h00 = (1 + 2 * tau) * (1 - tau) * (1 - tau), h10 = tau * (1 - tau) * (1 - tau);
-            const double h01 = tau * tau * (3 - 2 * tau), h11 = tau * tau * (tau - 1);
-            note_extremes(side_ * (h00 * y0 + h10 * dt * v0 + h01 * y1 + h11 * dt * v1));
-        }
+        // A turning point inside the step (one that reaches the fracture angle was located).
+        if (side_ * v0 > 0.0 && side_ * v1 < 0.0) note_extremes(side_ * hermite_peak(dt, y0, v0, y1, v1));
         note_extremes(std::min(side_ * y1, kHalfPi));
         if (obs_) observe(t0, y0, v0, a0, t1, y1, v1);
         t_ = t1;
@@ -577,7 +694,7 @@ private:
                 return;
             case Event::impact: return impact();
             case Event::turn:
-                k_max_ = false;
+                set_kmax(false);
                 return;
             case Event::none: break;
         }
@@ -595,6 +712,7 @@ private:
         const double approach = std::abs(thd_);
         ++r_.impacts_total;
         th_ = 0.0;
+        reset_reactions();
         if (approach < m_.v_threshold) {
             // The block is settling: the remaining impacts pile up in a time of order
             // 2 v / (p^2 alpha (1 - e)). Take it as at rest (physics.md §5).
@@ -639,8 +757,8 @@ private:
         if (m_.anchorage == AnchorageKind::adaptive) {
             // One step behind, as the paper's K(t+1) from the state at t; Eq. 22 on |theta|'s
             // change over the step.
-            if (in_pulse()) k_max_ = adaptive_uses_kmax(true, m_.pulse.ax(t_), side_, 0.0, k_max_);
-            else if (th_ != 0.0) k_max_ = adaptive_uses_kmax(false, 0.0, 1.0, std::abs(th_) - std::abs(y0), k_max_);
+            if (in_pulse()) set_kmax(adaptive_uses_kmax(true, m_.pulse.ax(t_), side_, 0.0, k_max_));
+            else if (th_ != 0.0) set_kmax(adaptive_uses_kmax(false, 0.0, 1.0, std::abs(th_) - std::abs(y0), k_max_));
         }
         if (t_ >= set_.t_end_s) finish(Outcome::safe);
     }
@@ -660,20 +778,12 @@ private:
         const double k = side_ == 0 || !intact(side_) ? 0.0 : (k_max_ ? m_.k_max_n_m : m_.k_min_n_m);
         s.k_left = side_ > 0 ? k : 0.0;
         s.k_right = side_ < 0 ? k : 0.0;
-        // Eq. 23-24 integrated by the trapezoidal rule over the step; work done on the block.
-        auto p_exc = [&](double t, double y, double v, bool end) {
-            const double ax = (end ? t <= t_pulse_end_ : t < t_pulse_end_) ? m_.pulse.ax(t) : 0.0;
-            return -m_.mass_kg * ax * m_.gravity * m_.radius_m * std::cos(m_.alpha - std::abs(y)) * v;
-        };
-        auto p_anc = [&](double y, double v) {
-            const double b = m_.half_width_m;
-            return -8.0 * b * b * k * std::sin(0.5 * std::abs(y)) * (y > 0 ? 1.0 : (y < 0 ? -1.0 : 0.0)) * v;
-        };
-        const double h = t1 - t0;
-        w_exc_ += 0.5 * h * (p_exc(t0, y0, v0, false) + p_exc(t1, y1, v1, true));
-        w_anch_ += 0.5 * h * (p_anc(y0, v0) + p_anc(y1, v1));
+        const Works w = step_works(m_, k, s, t1);
+        w_exc_ += w.excitation_j;
+        w_anch_ += w.anchorage_j;
         s.work_excitation = w_exc_;
         s.work_anchorage = w_anch_;
+        s.switch_energy = e_switch_;
         s.impacts = r_.impacts;
         (*obs_)(s);
     }

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "rocksweep/fastmath.hpp"
+
 namespace rocksweep {
 
 std::string to_string(Equations e) { return e == Equations::nonlinear ? "nonlinear" : "linearised"; }
@@ -32,6 +34,33 @@ double CellModel::omega_max() const {
     if (pulse.kind == PulseKind::sine) w = std::max(w, pulse.omega);
     w = std::max(w, std::sqrt(p2 + 0.5 * kappa_max));
     return w;
+}
+
+BaseReactions base_reactions(const CellModel& m, int side, double kappa, double k_n_m, double ax, double ay,
+                             double theta, double theta_dot) {
+    // Centre of mass about the pivot at x = s b: x = s b - s R sin(alpha - phi),
+    // y = R cos(alpha - phi), phi = s theta; f = m (a_ground + a_cm) - spring - weight.
+    const double s = side, phi = side * theta;
+    double sa, ca, sh, ch;
+    fastmath::sincos(m.alpha - phi, sa, ca);
+    fastmath::sincos(0.5 * phi, sh, ch);
+    const bool lin = m.equations == Equations::linearised;
+    // phi'' = s theta'' (the equation of motion on side s, written on phi)
+    const double phidd = -m.p2 * ((1.0 + ay) * (lin ? m.alpha - phi : sa) + s * ax * (lin ? 1.0 : ca)) -
+                         kappa * (lin ? 0.5 * phi : sh);
+    const double w2 = theta_dot * theta_dot, r_g = m.radius_m / m.gravity;
+    BaseReactions f;
+    f.fx = ax + s * r_g * (ca * phidd + sa * w2);
+    f.fy = 1.0 + ay + r_g * (sa * phidd - ca * w2);
+    if (k_n_m != 0.0) {
+        // The spring pulls the lifted corner back towards its anchor, along (-s sin(phi/2),
+        // -cos(phi/2)): the pivot carries the opposite, F cos(phi/2) down and F sin(phi/2)
+        // towards the lifted side. F = 4 b k tan(phi/2), so F cos(phi/2) = 4 b k sin(phi/2).
+        const double f_mg = 4.0 * m.half_width_m * k_n_m / (m.mass_kg * m.gravity);
+        f.fy += f_mg * sh;
+        f.fx += s * f_mg * sh * (sh / ch);
+    }
+    return f;
 }
 
 CellModel make_cell_model(const Block& block, const Anchorage& a, const Pulse& pulse,

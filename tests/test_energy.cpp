@@ -3,9 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
+#include <vector>
 
 #include "rocksweep/anchorage.hpp"
 #include "rocksweep/energy.hpp"
+#include "rocksweep/history.hpp"
 #include "rocksweep/integrator.hpp"
 
 using namespace rocksweep;
@@ -91,4 +94,45 @@ TEST(Energy, FreeFateCountsTheGeometricTailOfImpacts) {
     const int expected = static_cast<int>(std::floor(std::log(100.0) / -std::log(m.e))) + 1;
     EXPECT_EQ(f.impacts, expected);
     EXPECT_EQ(f.impacts_total, expected + 1);
+}
+
+TEST(Energy, AdaptiveSwitchesReportTheSpringEnergyTheyInject) {
+    // The paper's adaptive law switches K_min -> K_max at nonzero elongation while the ground
+    // moves: each switch raises the spring's potential 16 b^2 K (1 - cos(phi/2)) by
+    // 16 b^2 (K_max - K_min)(1 - cos(phi/2)). Recomputed here from the sampled history (the
+    // stiffness columns and theta at the first sample after each switch, 1e-5 s apart).
+    // Several cycles of ground motion (a one-sine pulse changes sign only once), as a record:
+    // 3 s of a 1.7 Hz and a 4.1 Hz sine, 0.9 and 0.5 tan(alpha) g, sampled every 5 ms.
+    Pulse p;
+    p.kind = PulseKind::record;
+    p.record_dt_s = 0.005;
+    auto samples = std::make_shared<std::vector<double>>();
+    for (int i = 0; i <= 600; ++i) {
+        const double t = i * p.record_dt_s;
+        samples->push_back(std::tan(kBlock.alpha_rad) * (0.9 * std::sin(2 * M_PI * 1.7 * t) + 0.5 * std::sin(2 * M_PI * 4.1 * t)));
+    }
+    p.record = samples;
+    const CellModel m = make_cell_model(kBlock, adaptive_anchorage(kBlock, kStrength, kBlock.alpha_rad, 0.1), p);
+    const double dt = 1e-5;
+    const History h = sample_history(m, {}, dt, 5.0);
+    const double b = kBlock.half_width_m(), k_max = m.k_max_n_m, k_min = m.k_min_n_m;
+    double expected = 0.0;
+    int switches = 0;
+    for (std::size_t i = 1; i < h.t.size(); ++i) {
+        for (const auto* k : {&h.k_left, &h.k_right}) {
+            if ((*k)[i - 1] == k_min && (*k)[i] == k_max && h.theta[i] != 0.0) {
+                expected += 16.0 * b * b * (k_max - k_min) * (1.0 - std::cos(0.5 * std::abs(h.theta[i])));
+                ++switches;
+            }
+        }
+        ASSERT_GE(h.e_switch[i], h.e_switch[i - 1]);  // only the injections are counted
+    }
+    EXPECT_GE(switches, 3) << "switch energy " << h.switch_energy_j << " J";
+    EXPECT_GT(expected, 1.0);  // joules, not rounding
+    // theta moves by at most |theta_dot| dt between the switch and the sample.
+    EXPECT_NEAR(h.switch_energy_j, expected, 1e-3 * expected);
+    EXPECT_EQ(h.e_switch.back(), h.switch_energy_j);
+    // A constant spring never switches.
+    const CellModel c = make_cell_model(kBlock, constant_anchorage(kBlock, kStrength, kBlock.alpha_rad), p);
+    EXPECT_EQ(sample_history(c, {}, 0.01, 5.0).switch_energy_j, 0.0);
 }

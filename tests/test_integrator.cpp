@@ -35,6 +35,19 @@ Anchorage anchorage(int kind) {
     }
 }
 
+/// A sine-pulse run to time t for the convergence tests, and the reference setting (4096 steps
+/// per period) they compare with.
+struct ConvergenceCase {
+    int anchorage;
+    double w, a, t;
+    CellModel model() const { return make_cell_model(kBlock, ::anchorage(anchorage), sine(w, a)); }
+};
+IntegratorSettings reference_settings() {
+    IntegratorSettings s;
+    s.steps_per_period = 4096;
+    return s;
+}
+
 /// theta at exactly t_end, and the impacts counted on the way.
 double theta_at(const CellModel& m, IntegratorSettings s, double t_end, int* impacts = nullptr) {
     s.t_end_s = t_end;
@@ -73,11 +86,9 @@ TEST(Housner, ConstantAccelerationCriticalDurationUnderLinearisedEquations) {
 
 TEST(Convergence, FourthOrderThroughImpacts) {
     // Free block (3 impacts by t = 4 s) and adaptive block (5 impacts by t = 5 s).
-    struct Case { int anchorage; double w, a, t; };
-    for (const Case c : {Case{0, 6.0, 4.0, 4.0}, Case{2, 4.0, 2.7, 5.0}}) {
-        const CellModel m = make_cell_model(kBlock, anchorage(c.anchorage), sine(c.w, c.a));
-        IntegratorSettings s;
-        s.steps_per_period = 4096;
+    for (const ConvergenceCase c : {ConvergenceCase{0, 6.0, 4.0, 4.0}, ConvergenceCase{2, 4.0, 2.7, 5.0}}) {
+        const CellModel m = c.model();
+        IntegratorSettings s = reference_settings();
         int impacts = 0;
         const double ref = theta_at(m, s, c.t, &impacts);
         EXPECT_GE(impacts, 3);
@@ -89,6 +100,35 @@ TEST(Convergence, FourthOrderThroughImpacts) {
         // halving the step divides the error by 2^4 = 16
         EXPECT_NEAR(err[0] / err[1], 16.0, 3.0) << "anchorage " << c.anchorage;
         EXPECT_NEAR(err[1] / err[2], 16.0, 3.0) << "anchorage " << c.anchorage;
+    }
+}
+
+TEST(Convergence, WorksAtTheSampleTimesAreFourthOrderLikeTheta) {
+    // Eq. 23-24 sampled every 0.01 s (sample times fall inside steps): the largest error over
+    // the samples, through impacts, falls by 2^4 when the step halves, as theta's does.
+    for (const ConvergenceCase c : {ConvergenceCase{1, 4.0, 2.7, 5.0}, ConvergenceCase{2, 4.0, 2.7, 5.0}}) {
+        const CellModel m = c.model();
+        IntegratorSettings s = reference_settings();
+        const History ref = sample_history(m, s, 0.01, c.t);
+        ASSERT_GE(ref.result.impacts, 3);
+        auto err = [&](double n) {
+            s.steps_per_period = n;
+            const History h = sample_history(m, s, 0.01, c.t);
+            EXPECT_EQ(h.t.size(), ref.t.size());
+            double exc = 0.0, anc = 0.0, scale = 0.0;
+            for (std::size_t i = 0; i < ref.t.size(); ++i) {
+                exc = std::max(exc, std::abs(h.w_excitation[i] - ref.w_excitation[i]));
+                anc = std::max(anc, std::abs(h.w_anchorage[i] - ref.w_anchorage[i]));
+                scale = std::max(scale, std::abs(ref.w_excitation[i]));
+            }
+            EXPECT_GT(scale, 1e3);  // kJ of work: the errors below are not at rounding level
+            return std::pair{exc, anc};
+        };
+        const auto e64 = err(64), e128 = err(128), e256 = err(256);
+        EXPECT_NEAR(e64.first / e128.first, 16.0, 4.0) << "anchorage " << c.anchorage;
+        EXPECT_NEAR(e128.first / e256.first, 16.0, 4.0) << "anchorage " << c.anchorage;
+        EXPECT_NEAR(e64.second / e128.second, 16.0, 4.0) << "anchorage " << c.anchorage;
+        EXPECT_NEAR(e128.second / e256.second, 16.0, 4.0) << "anchorage " << c.anchorage;
     }
 }
 
@@ -202,6 +242,51 @@ TEST(Outcome, PaperSampleCaseAtOmegaRatio4Amplitude2_7) {
     EXPECT_TRUE(std::isnan(cons.t_overturn_s));
 }
 
+TEST(Fracture, APeakInsideAStepPastThetaFBreaksTheSpring) {
+    // Issue 7: |theta| passes theta_f and comes back inside one step. Located, the fracture
+    // gives the converged answer at the default step (48 per period) and at 128.
+    const CellModel grazing = make_cell_model(kBlock, anchorage(1), sine(4.0, 2.7932));
+    for (double n : {48.0, 128.0}) {
+        IntegratorSettings s;
+        s.steps_per_period = n;
+        const CellResult r = integrate_cell(grazing, s);
+        EXPECT_EQ(r.outcome, Outcome::overturned_impact) << n;
+        // The block lingers near the top after the fracture, where errors grow like e^(p t).
+        EXPECT_NEAR(r.t_overturn_s, 4.6663, 1e-3) << n;
+        EXPECT_EQ(r.broken, broken_left) << n;
+    }
+    // theta_f = alpha / 4: the default used to report max |theta| = 0.5687 alpha.
+    const CellModel quarter = make_cell_model(kBlock, anchorage(3), sine(8.965, 5.725));
+    IntegratorSettings fine;
+    fine.steps_per_period = 1024;
+    const CellResult d = integrate_cell(quarter, {}), f = integrate_cell(quarter, fine);
+    EXPECT_NEAR(f.max_rotation, 0.355595, 1e-6);
+    EXPECT_NEAR(d.max_rotation, f.max_rotation, 1e-6);
+    EXPECT_EQ(d.broken, f.broken);
+    EXPECT_EQ(d.impacts, f.impacts);
+    // An intact spring never carries more than F_u (to the located peak's accuracy).
+    EXPECT_LE(integrate_cell(grazing, {}).peak_force_ratio, 1.0 + 1e-9);
+}
+
+TEST(Fracture, ThePeakDecidesOnBothSidesOfThetaF) {
+    // The same pulse with theta_f raised just above the first peak: at 1 + 4e-5 the peak
+    // (1.000036 alpha converged) stays 4e-6 below it and the spring holds; at 1 + 3e-5 it
+    // breaks. Both need the located turning point: the steps' ends lie well below either.
+    const Pulse p = sine(4.0, 2.7932);
+    IntegratorSettings s;
+    s.energy_stop = false;
+    s.t_end_s = 3.0;
+    const double hold_ratio = 1.0 + 4e-5, break_ratio = 1.0 + 3e-5;
+    const CellResult hold =
+        integrate_cell(make_cell_model(kBlock, constant_anchorage(kBlock, kStrength, kBlock.alpha_rad * hold_ratio), p), s);
+    EXPECT_EQ(hold.broken, 0);
+    EXPECT_NEAR(hold.max_rotation, 1.000036, 1e-6);
+    const CellResult brk =
+        integrate_cell(make_cell_model(kBlock, constant_anchorage(kBlock, kStrength, kBlock.alpha_rad * break_ratio), p), s);
+    EXPECT_EQ(brk.broken, broken_left);
+    EXPECT_GT(brk.max_rotation, 1.04);  // past alpha with the spring gone
+}
+
 TEST(Outcome, EnergyStopGivesTheSameResultsAsIntegratingToRest) {
     IntegratorSettings on, off;
     off.energy_stop = false;
@@ -308,4 +393,43 @@ TEST(Reactions, RockingNeedsAtLeastTanAlphaAndMatchesTheMotionOfTheCentreOfMass)
     EXPECT_GT(used, 10000u);
     EXPECT_LE(worst, r.mu_required * (1 + 2e-3));  // sampled demand never exceeds the reported one
     EXPECT_GE(worst, r.mu_required * (1 - 2e-2));  // and comes close to it
+}
+
+TEST(Reactions, InclinedSpringForceMatchesAVectorEvaluation) {
+    // Issue 7, item 5. Independently of base_reactions: the spring's line from the coordinates
+    // of the lifted corner and of its anchor, its magnitude from the Eq. 8 moment about the
+    // pivot, the centre of mass's acceleration from rigid-body kinematics (a = phi'' x r -
+    // phi'^2 r, rotation -s phi about the pivot); f = m (a_ground + a_cm) - spring - weight.
+    const CellModel m = make_cell_model(kBlock, anchorage(3), sine(4.0, 2.7));
+    const double b = kBlock.half_width_m(), h = kBlock.half_height_m(), mg = kBlock.mass_kg * kBlock.gravity;
+    double worst_spring_fx = 0.0;
+    for (int side : {1, -1}) {
+        for (double phi : {0.01, 0.05, 0.1, 0.2}) {
+            for (double thd : {0.0, 0.3, -0.4}) {
+                const double ax = 0.12, ay = 0.05, theta = side * phi, k = m.k_max_n_m;
+                const BaseReactions f = base_reactions(m, side, m.kappa_max, k, ax, ay, theta, thd);
+                // Body points relative to the pivot (x = s b), rotated by beta = -s phi.
+                const double beta = -side * phi, c = std::cos(beta), sn = std::sin(beta);
+                auto rot = [&](double x, double y) { return std::pair{x * c - y * sn, x * sn + y * c}; };
+                const auto [rx, ry] = rot(-side * b, h);               // centre of mass
+                const auto [cx, cy] = rot(-side * 2.0 * b, 0.0);       // lifted corner
+                const double dx = -side * 2.0 * b - cx, dy = -cy;      // corner -> anchor (x = -s b)
+                const double len = std::hypot(dx, dy), ux = dx / len, uy = dy / len;
+                // |moment of a unit force along u about the pivot| = |r_corner x u|
+                const double arm = std::abs(cx * uy - cy * ux);
+                const double F = 8.0 * b * b * k * std::sin(0.5 * phi) / arm;
+                // Angular acceleration of the body: beta'' = -s phi'' = -theta''.
+                const double thdd = rocking_acceleration(m, side, m.kappa_max, ax, ay, theta);
+                const double bdd = -thdd, bd = -thd;
+                const double acx = -bdd * ry - bd * bd * rx, acy = bdd * rx - bd * bd * ry;
+                const double g = kBlock.gravity;
+                const double fx = (kBlock.mass_kg * (ax * g + acx) - F * ux) / mg;
+                const double fy = (kBlock.mass_kg * (ay * g + acy) - F * uy + mg) / mg;
+                EXPECT_NEAR(f.fx, fx, 1e-12) << side << " " << phi << " " << thd;
+                EXPECT_NEAR(f.fy, fy, 1e-12) << side << " " << phi << " " << thd;
+                worst_spring_fx = std::max(worst_spring_fx, std::abs(F * ux) / mg);
+            }
+        }
+    }
+    EXPECT_GT(worst_spring_fx, 1e-3);  // the horizontal pull matters at these angles
 }

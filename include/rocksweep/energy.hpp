@@ -4,6 +4,7 @@
 #include <cstdint>
 
 #include "rocksweep/model.hpp"
+#include "rocksweep/step.hpp"
 
 namespace rocksweep {
 
@@ -36,5 +37,16 @@ struct FreeFate {
 /// Decided iff every later swing stays bounded; then the block is safe and the result holds
 /// the extremes and impact counts of the whole remaining motion.
 FreeFate free_fate(const CellModel& m, int side, double v, bool left_intact, bool right_intact);
+
+/// Works done on the block (Eq. 23-24) [J]: by the excitation, -m ax R cos(alpha - |theta|)
+/// theta_dot, and by the working spring of stiffness k [N/m], -8 b^2 k sin(|theta|/2) sgn(theta)
+/// theta_dot, integrated over [t0, t] of one step by 3-point Gauss-Legendre on the step's cubic
+/// Hermite interpolant: O(dt^5) per step, so the cumulative works converge at fourth order like
+/// theta. Precondition: step.t0 <= t <= step.t1; the ground acts at nodes before the pulse's end.
+struct Works {
+    double excitation_j = 0.0;
+    double anchorage_j = 0.0;
+};
+Works step_works(const CellModel& m, double k_n_m, const StepEnds& step, double t);
 
 }  // namespace rocksweep

@@ -8,6 +8,7 @@
 
 #include "rocksweep/model.hpp"
 #include "rocksweep/outcome.hpp"
+#include "rocksweep/step.hpp"
 
 namespace rocksweep {
 
@@ -38,11 +39,12 @@ public:
 };
 
 /// One accepted step or event, for histories.
-struct StepRecord {
-    double t0, theta0, theta_dot0, acc0;  ///< start of step (acc = theta'')
-    double t1, theta1, theta_dot1, acc1;  ///< end of step
+struct StepRecord : StepEnds {
     double k_left, k_right;               ///< working stiffness over the step [N/m], 0 if idle
-    double work_excitation, work_anchorage;  ///< cumulative at t1 (Eq. 23-24) [J]
+    double work_excitation, work_anchorage;  ///< cumulative at t1 (Eq. 23-24) [J], see step_works
+    /// Cumulative energy the adaptive law's K_min -> K_max switches put into the spring before
+    /// this step (at t0 and earlier) [J]; physics.md §4.
+    double switch_energy;
     int impacts;
 };
 using StepObserver = std::function<void(const StepRecord&)>;

@@ -41,6 +41,19 @@ struct CellModel {
     double omega_max() const;
 };
 
+/// Base reactions at the pivot per unit m g while rocking (physics.md §6): horizontal (friction)
+/// and vertical.
+struct BaseReactions {
+    double fx = 0.0, fy = 0.0;
+};
+/// The pivot's reaction on side s (+1: theta > 0, pivot at x = +b) at rotation theta [rad] and
+/// angular velocity theta_dot [rad/s], ground accelerations ax, ay [g], with the working spring
+/// of stiffness k [N/m] and kernel coefficient kappa = 8 b^2 k / I0 (both 0 when none): from the
+/// motion of the centre of mass, the spring's pull F = 4 b k tan(|theta|/2) acting along the
+/// line at |theta|/2 to the vertical (the moment arm 2 b cos(|theta|/2) of Eq. 8).
+BaseReactions base_reactions(const CellModel& m, int side, double kappa, double k_n_m, double ax, double ay,
+                             double theta, double theta_dot);
+
 /// `impact_threshold` is the settling threshold as a fraction of p alpha (physics.md §5).
 CellModel make_cell_model(const Block& block, const Anchorage& anchorage, const Pulse& pulse,
                           Equations equations = Equations::nonlinear,
