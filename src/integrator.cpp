@@ -411,7 +411,7 @@ private:
     /// that uplift itself needs: the energy decision leaves nothing out. Only |theta| <= alpha
     /// is checked.
     void note_reactions() {
-        const double s = side_, phi = side_ * th_;
+        const double phi = side_ * th_;
         // Past alpha the block is beyond its static stability limit: a fall to the ground needs
         // ever more friction (f_y -> 0 as theta_dot grows) and says nothing about survival.
         if (phi > m_.alpha) return reset_reactions();
