@@ -26,8 +26,10 @@ namespace {
 volatile std::sig_atomic_t g_signal = 0;
 extern "C" void note_signal(int sig) { g_signal = sig; }
 
-/// SIGINT/SIGTERM only raise a flag while a sweep runs: the integration polls it and gives up
-/// its chunk, rank 0 stops handing out work, gathers what is done and saves it.
+/// SIGINT/SIGTERM only raise a flag while a sweep runs (from before its output is claimed to the
+/// end of its last save, so a signal never kills a save half-way and leaves NAME.tmp): the
+/// integration polls it and gives up its chunk, rank 0 stops handing out work, gathers what is
+/// done and saves it.
 class SignalGuard {
 public:
     SignalGuard() {
@@ -100,6 +102,7 @@ int run_sweep(const Options& opts, const SweepCommand& cmd, const std::string& c
     const SweepSpec spec = make_sweep_spec(opts);  // the same on every rank, so is any error
     IntegratorSettings settings = make_settings(opts.numerics);
     RootStream log(mpi);
+    const SignalGuard signals;
 
     // The output is claimed on rank 0 only; the verdict reaches every rank before any work.
     Start start;
@@ -183,11 +186,7 @@ int run_sweep(const Options& opts, const SweepCommand& cmd, const std::string& c
         Progress bar(n, cmd.quiet || !mpi.is_root());
         progress = &bar;
         done_now = 0;
-        ScheduleStats stats;
-        {
-            SignalGuard guard;
-            stats = scheduler->run(todo, so, compute, sink);
-        }
+        const ScheduleStats stats = scheduler->run(todo, so, compute, sink);
         bar.update(done_now);
         bar.finish();
         progress = nullptr;
