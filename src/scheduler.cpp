@@ -145,14 +145,16 @@ class SerialScheduler final : public Scheduler {
 public:
     ScheduleStats run(const std::vector<IndexRange>& todo, const ScheduleOptions& options,
                       const ComputeFn& compute, const SinkFn& sink) override {
+        stop_requested_ = options.stop_requested;
         return run_serial(todo, options, compute, sink, stopping_);
     }
     int rank() const override { return 0; }
     int size() const override { return 1; }
-    bool stop_pending() override { return stopping_; }
+    bool stop_pending() override { return stopping_ || (stop_requested_ && stop_requested_()); }
 
 private:
     bool stopping_ = false;
+    std::function<bool()> stop_requested_;
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -284,17 +286,20 @@ public:
     int rank() const override { return rank_; }
     int size() const override { return size_; }
     bool stop_pending() override {
-        if (!stopping_ && rank_ != 0 && size_ > 1) {
-            int found = 0;
-            mpi_check(MPI_Iprobe(0, tag_halt, comm_, &found, MPI_STATUS_IGNORE), "MPI_Iprobe");
-            stopping_ = found != 0;
-        }
+        if (stopping_) return true;
+        // Rank 0 asks the request itself: its own chunk may be the slow one. The scheduler
+        // loop notices the same answer as soon as that chunk is given up.
+        if (rank_ == 0) return stop_requested_ && stop_requested_();
+        int found = 0;
+        mpi_check(MPI_Iprobe(0, tag_halt, comm_, &found, MPI_STATUS_IGNORE), "MPI_Iprobe");
+        stopping_ = found != 0;
         return stopping_;
     }
 
     ScheduleStats run(const std::vector<IndexRange>& todo, const ScheduleOptions& options,
                       const ComputeFn& compute, const SinkFn& sink) override {
         stopping_ = false;
+        stop_requested_ = options.stop_requested;
         if (size_ == 1) return run_serial(todo, options, compute, sink, stopping_);
         validate(options);
         if (header_bytes + options.max_chunk * options.record_bytes > static_cast<std::size_t>(INT_MAX))
@@ -318,6 +323,7 @@ private:
     int rank_ = 0;
     int size_ = 1;
     bool stopping_ = false;
+    std::function<bool()> stop_requested_;
 };
 
 ScheduleStats MpiScheduler::run_master(const std::vector<IndexRange>& todo, const ScheduleOptions& options,

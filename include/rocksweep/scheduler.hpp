@@ -83,8 +83,8 @@ public:
                               const ComputeFn& compute, const SinkFn& sink) = 0;
     virtual int rank() const = 0;
     virtual int size() const = 0;
-    /// True once this run is stopping: on rank 0 after stop_requested returned true or a chunk
-    /// was abandoned, on a worker once rank 0's stop notice has arrived. Cheap (one
+    /// True once this run is stopping: on rank 0 when stop_requested returns true (asked
+    /// afresh) or a chunk was abandoned, on a worker once rank 0's stop notice has arrived. Cheap (one
     /// MPI_Iprobe), callable from inside ComputeFn, so that a chunk of slow cells can be given
     /// up within a fraction of a second of the request.
     virtual bool stop_pending() = 0;

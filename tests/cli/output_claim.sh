@@ -41,18 +41,23 @@ simulate)
   ;;
 lock)
   out="$dir/out.h5"
-  slow=(--anchorages free --omega-ratio-points 4 --amplitude-ratio-points 2 --steps-per-period 100000 --quiet)
-  "$rs" sweep --config "$cfg" "${slow[@]}" -o "$out" & pid=$!
-  sleep 0.3
+  # ~2.5 s of cells: the first run still computes when the second has started up.
+  slow=(--anchorages free --omega-ratio-points 2 --amplitude-ratio-points 2 --steps-per-period 100000
+        --no-energy-stop --quiet)
+  "$rs" sweep --config "$cfg" "${slow[@]}" -o "$out" 2>"$dir/first.txt" & pid=$!
+  for _ in $(seq 1 300); do grep -q "^sweep:" "$dir/first.txt" && break; sleep 0.02; done  # claimed
   expect 2 "^rocksweep: error: --output = $out is invalid: an output no other run is writing \(another rocksweep holds $out.lock\)" \
     "$rs" sweep --config "$cfg" "${slow[@]}" -o "$out" --overwrite
+  kill -0 "$pid" 2>/dev/null || fail "the first sweep ended before the second was refused: too fast a test"
   wait "$pid" || fail "the first sweep failed"
   h5dump -a /complete "$out" | grep -q "(0): 1" || fail "first sweep incomplete"
   [ ! -e "$out.lock" ] && [ ! -e "$out.tmp" ] || fail "lock or tmp left after a finished run"
   # A SIGKILLed run leaves its lock file, but no lock: --resume goes ahead at once.
   rm -f "$out"
-  "$rs" sweep --config "$cfg" "${slow[@]}" --checkpoint-interval 0.1 -o "$out" & pid=$!
-  sleep 0.6; kill -KILL "$pid"; wait "$pid" 2>/dev/null
+  "$rs" sweep --config "$cfg" "${slow[@]}" --checkpoint-interval 0.1 -o "$out" 2>"$dir/killed.txt" & pid=$!
+  for _ in $(seq 1 300); do grep -q "^sweep:" "$dir/killed.txt" && break; sleep 0.02; done
+  kill -KILL "$pid"; wait "$pid" 2>/dev/null
+  [ -e "$out.lock" ] || fail "expected the killed run's lock file to stay"
   "$rs" sweep --config "$cfg" "${slow[@]}" -o "$out" --resume || fail "--resume after SIGKILL refused"
   ;;
 *) fail "unknown mode $mode" ;;
