@@ -180,7 +180,7 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
         ->check(number_in(0.1, 86400))->capture_default_str();
 
     std::string sim_output;
-    bool sim_quiet = false;
+    bool sim_quiet = false, sim_overwrite = false;
     SingleOptions& so = opts.single;
     CLI::App* sim = app.add_subcommand("simulate", "One time history: theta, theta_dot, stiffness, works");
     sim->fallthrough();
@@ -203,6 +203,7 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
         ->check(CLI::IsMember({"g", "m/s^2"}));
     sim->add_option("--record-scale", so.record_scale, "Factor applied to the record")->check(number_in(-100, 100))->capture_default_str();
     sim->add_flag("-q,--quiet", sim_quiet, "Print nothing on success");
+    sim->add_flag("--overwrite", sim_overwrite, "Replace an existing output file");
 
     CLI::App* info = app.add_subcommand("info", "Derived values: alpha, p, e, R, I0, K and F_u per scenario");
     info->fallthrough();
@@ -237,7 +238,7 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
         }
         if (*sim) {
             if (!mpi.is_root()) return 0;  // one history: one rank is enough
-            return run_simulate(opts, SimulateCommand{sim_output, sim_quiet}, config_text);
+            return run_simulate(opts, SimulateCommand{sim_output, sim_quiet, sim_overwrite}, config_text);
         }
         return run_sweep(opts, sweep_cmd, config_text, mpi);
     } catch (const InputError& e) {

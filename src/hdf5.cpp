@@ -1,8 +1,13 @@
 #include "rocksweep/hdf5.hpp"
 
+#include <fcntl.h>
 #include <hdf5_hl.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <cstdlib>
+#include <cstring>
+#include <cerrno>
 #include <filesystem>
 #include <system_error>
 #include <type_traits>
@@ -65,13 +70,9 @@ std::string object_file(hid_t id) {
     return name_from([id](char* buf, std::size_t size) { return H5Fget_name(id, buf, size); });
 }
 
-// "object '/spectra/free' of 'out.h5.tmp'", for messages about a handle of any kind.
-std::string describe(hid_t id) {
-    return "object '" + object_path(id) + "' of '" + object_file(id) + "'";
-}
-
 [[noreturn]] void fail(std::string_view context) {
-    throw Hdf5Error(std::string(context) + ": " + error_stack_text());
+    const int err = errno;  // before the stack walk can change it
+    throw Hdf5Error(std::string(context) + ": " + error_stack_text(), err);
 }
 
 std::string in_quotes(std::string_view s) {
@@ -207,10 +208,10 @@ void Handle::release() noexcept {
 
 void Handle::close() {
     if (id_ < 0 || !close_) return;
-    // On failure keep the id: a file refused because objects are still open (H5F_CLOSE_SEMI)
-    // is then closed by the destructor once they are. HDF5 does not reuse ids, so a second
-    // attempt on an id that did go away only returns an error.
-    if (close_(id_) < 0) fail("closing " + describe(id_));
+    // No name in the message: asking HDF5 for the name of an object whose close just failed
+    // reads freed memory. HDF5 does not reuse ids, so the destructor's second attempt on an id
+    // that did go away only returns an error.
+    if (close_(id_) < 0) fail("closing an HDF5 object");
     id_ = H5I_INVALID_HID;
 }
 
@@ -276,7 +277,7 @@ Group Location::create_group(std::string_view name) const {
     PropertyList gcpl = PropertyList::create(H5P_GROUP_CREATE);
     check(H5Pset_obj_track_times(gcpl.id(), 0), "creating group " + in_quotes(n));
     const hid_t g = H5Gcreate2(id(), n.c_str(), H5P_DEFAULT, gcpl.id(), H5P_DEFAULT);
-    if (g < 0) fail("creating group " + in_quotes(n) + " in " + in_quotes(file_name()));
+    if (g < 0) fail("creating group " + in_quotes(n));  // the writer names the file
     return Group(g);
 }
 
@@ -342,7 +343,54 @@ Datatype Dataset::type() const {
 
 File File::create(const std::string& path) {
     silence_errors();
+    return create_with(path, PropertyList::create(H5P_FILE_ACCESS));
+}
+
+namespace {
+
+// The core driver's memory, through the file image callbacks: it is ours to keep at close.
+// (H5Fget_file_image on an open 1.8-format file returns a superblock whose checksum does not
+// match its cleared status flags in HDF5 1.10; the bytes freed at close are the real file.)
+// The udata is the caller's MemoryImage, which outlives the file: HDF5's "copies" of it are
+// the same pointer, and freeing one frees nothing.
+using ImageBuffer = MemoryImage;
+
+void* image_malloc(std::size_t size, H5FD_file_image_op_t, void* udata) {
+    static_cast<ImageBuffer*>(udata)->driver_size = size;
+    return std::malloc(size);
+}
+void* image_memcpy(void* dest, const void* src, std::size_t size, H5FD_file_image_op_t, void*) {
+    return std::memcpy(dest, src, size);
+}
+void* image_realloc(void* ptr, std::size_t size, H5FD_file_image_op_t, void* udata) {
+    static_cast<ImageBuffer*>(udata)->driver_size = size;
+    return std::realloc(ptr, size);
+}
+herr_t image_free(void* ptr, H5FD_file_image_op_t op, void* udata) {
+    auto* buffer = static_cast<ImageBuffer*>(udata);
+    if (op == H5FD_FILE_IMAGE_OP_FILE_CLOSE && ptr) {
+        const auto* bytes = static_cast<const unsigned char*>(ptr);
+        buffer->bytes.assign(bytes, bytes + buffer->driver_size);
+    }
+    std::free(ptr);
+    return 0;
+}
+void* udata_copy(void* udata) { return udata; }
+herr_t udata_free(void*) { return 0; }
+
+}  // namespace
+
+File File::create_in_memory(const std::string& name, MemoryImage& image) {
+    silence_errors();
     PropertyList fapl = PropertyList::create(H5P_FILE_ACCESS);
+    check(H5Pset_fapl_core(fapl.id(), std::size_t{1} << 16, 0), "setting the in-memory driver");
+    H5FD_file_image_callbacks_t callbacks{image_malloc, image_memcpy, image_realloc, image_free,
+                                          udata_copy,   udata_free,   &image};
+    check(H5Pset_file_image_callbacks(fapl.id(), &callbacks), "setting the in-memory driver");
+    return create_with(name, fapl);
+}
+
+File File::create_with(const std::string& path, const PropertyList& fapl) {
     // The 1.8 format: readable by every h5py and MATLAB in use, and it lets attributes larger
     // than 64 KiB (a long config text) move to dense storage instead of failing.
     check(H5Pset_libver_bounds(fapl.id(), H5F_LIBVER_V18, H5F_LIBVER_V18), "setting file format");
@@ -354,7 +402,7 @@ File File::create(const std::string& path) {
     check(H5Pset_obj_track_times(fcpl.id(), 0), "turning off object times");
     const hid_t f = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, fcpl.id(), fapl.id());
     if (f < 0) fail("creating HDF5 file " + in_quotes(path));
-    return File(f);
+    return File(f, path);
 }
 
 File File::open_read_only(const std::string& path) {
@@ -363,7 +411,22 @@ File File::open_read_only(const std::string& path) {
     check(H5Pset_fclose_degree(fapl.id(), H5F_CLOSE_SEMI), "setting close degree");
     const hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDONLY, fapl.id());
     if (f < 0) fail("opening HDF5 file " + in_quotes(path));
-    return File(f);
+    return File(f, path);
+}
+
+void File::close() {
+    if (!valid()) return;
+    const unsigned open_kinds = H5F_OBJ_DATASET | H5F_OBJ_GROUP | H5F_OBJ_DATATYPE | H5F_OBJ_ATTR | H5F_OBJ_LOCAL;
+    const ssize_t open = H5Fget_obj_count(id(), open_kinds);
+    if (open < 0) fail("closing " + in_quotes(path_));
+    if (open > 0)
+        throw Hdf5Error("closing " + in_quotes(path_) + ": " + std::to_string(open) +
+                        " object(s) opened from it are still open");
+    if (H5Fclose(id()) < 0) {
+        forget();
+        fail("closing " + in_quotes(path_));
+    }
+    forget();
 }
 
 // ---------------------------------------------------------------------------------------
@@ -562,36 +625,94 @@ void set_dimension_label(const Dataset& data, unsigned dim, std::string_view lab
 // ---------------------------------------------------------------------------------------
 // Publishing
 
+namespace {
+
+bool disk_full(int err) { return err == ENOSPC || err == EDQUOT || err == EFBIG; }
+
+/// One line for a save that failed: the file, the reason, and what the user still has.
+std::string write_failure(const std::string& path, int err, const std::string& detail) {
+    std::string text = "cannot write " + path + ": " + (disk_full(err) ? "no space left on device" : detail);
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(path, ec)) text += " (" + path + " still holds the previous save)";
+    return text;
+}
+
+}  // namespace
+
 void publish_atomically(const std::string& path,
                         const std::function<void(const std::string& tmp_path)>& write) {
     const std::string tmp = path + ".tmp";
-    try {
-        write(tmp);
-    } catch (...) {
+    auto remove_tmp = [&] {
         std::error_code ignored;
         std::filesystem::remove(tmp, ignored);
+    };
+    try {
+        write(tmp);
+    } catch (const InputError&) {
+        remove_tmp();
+        throw;
+    } catch (const std::invalid_argument&) {
+        remove_tmp();
+        throw;
+    } catch (const Hdf5Error& e) {
+        remove_tmp();
+        throw std::runtime_error(write_failure(path, e.sys_errno(), e.what()));
+    } catch (const std::system_error& e) {
+        remove_tmp();
+        throw std::runtime_error(write_failure(path, e.code().value(), e.what()));
+    } catch (...) {
+        remove_tmp();
         throw;
     }
     std::error_code ec;
     std::filesystem::rename(tmp, path, ec);
     if (ec) {
-        std::error_code ignored;
-        std::filesystem::remove(tmp, ignored);
+        remove_tmp();
         throw InputError("output", path, "a writable location (renaming " + tmp + " onto it: " +
                                              ec.message() + ")");
     }
 }
 
+void write_file_bytes(const std::string& path, std::span<const unsigned char> bytes, const std::string& output) {
+    const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    if (fd < 0)
+        throw InputError("output", output, "a writable location (creating " + path + ": " + std::strerror(errno) + ")");
+    auto fail_with_errno = [&](const char* doing) {
+        const int err = errno;
+        ::close(fd);
+        throw std::system_error(err, std::generic_category(), doing + (" " + path));
+    };
+    std::size_t done = 0;
+    while (done < bytes.size()) {
+        const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+        if (n < 0 && errno == EINTR) continue;  // a signal that only raised a flag
+        if (n < 0) fail_with_errno("writing");
+        done += static_cast<std::size_t>(n);
+    }
+    if (::fsync(fd) != 0) fail_with_errno("syncing");
+    if (::close(fd) != 0) throw std::system_error(errno, std::generic_category(), "closing " + path);
+}
+
 void publish_h5_atomically(const std::string& path, const std::function<void(const File&)>& write) {
     publish_atomically(path, [&](const std::string& tmp) {
-        File f;
-        try {
-            f = File::create(tmp);
-        } catch (const Hdf5Error& e) {
-            throw InputError("output", path, std::string("a writable location (") + e.what() + ")");
+        MemoryImage image;
+        std::size_t size = 0;
+        {
+            File f = File::create_in_memory(tmp, image);
+            write(f);
+            // The image's size is the allocated end of the file; the driver's buffer is rounded
+            // up to its increment. Flushed first: a flush allocates the last metadata.
+            check(H5Fflush(f.id(), H5F_SCOPE_LOCAL), "flushing " + in_quotes(tmp));
+            size = static_cast<std::size_t>(check(H5Fget_file_image(f.id(), nullptr, 0), "sizing " + in_quotes(tmp)));
+            f.close();
         }
-        write(f);
-        f.close();  // flush errors surface here, before the rename
+        // Past `size` the buffer must be the driver's zero padding: anything else would be
+        // metadata the close wrote after the flush, and a file cut there would be corrupt.
+        if (image.bytes.size() < size ||
+            std::any_of(image.bytes.begin() + static_cast<std::ptrdiff_t>(size), image.bytes.end(),
+                        [](unsigned char b) { return b != 0; }))
+            throw Hdf5Error("building " + in_quotes(tmp) + " in memory: the closed file does not end where HDF5 said");
+        write_file_bytes(tmp, std::span<const unsigned char>(image.bytes.data(), size), path);
     });
 }
 

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <memory>
 #include <stdexcept>
+#include <system_error>
 
 #include "rocksweep/errors.hpp"
 #include "rocksweep/hdf5.hpp"
@@ -104,7 +105,7 @@ struct FileCloser {
 };
 
 [[noreturn]] void write_failed(const std::string& path, int err) {
-    throw std::runtime_error("writing " + path + ": " + std::strerror(err));
+    throw std::system_error(err, std::generic_category(), "writing " + path);
 }
 
 }  // namespace

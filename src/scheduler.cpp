@@ -104,7 +104,8 @@ private:
 };
 
 ScheduleStats run_serial(const std::vector<IndexRange>& todo, const ScheduleOptions& options,
-                         const ComputeFn& compute, const SinkFn& sink) {
+                         const ComputeFn& compute, const SinkFn& sink, bool& stopping) {
+    stopping = false;
     const auto start = Clock::now();
     validate(options);
     validate(todo);
@@ -117,16 +118,22 @@ ScheduleStats run_serial(const std::vector<IndexRange>& todo, const ScheduleOpti
 
     while (!source.empty()) {
         if (options.stop_requested && options.stop_requested()) {
-            stats.stopped = true;
+            stopping = true;
             break;
         }
         const IndexRange chunk = source.take(options.max_chunk);
-        compute(chunk.first, chunk.count, records.data());
+        try {
+            compute(chunk.first, chunk.count, records.data());
+        } catch (const ChunkAbandoned&) {
+            stopping = true;
+            break;
+        }
         sink(chunk.first, chunk.count, records.data());
         ++stats.chunks;
         stats.cells_done += chunk.count;
         ticker.poll(Clock::now());
     }
+    stats.stopped = stopping;
     stats.complete = stats.cells_done == source.total();
     stats.cells_per_rank[0] = stats.cells_done;
     stats.chunks_per_rank[0] = stats.chunks;
@@ -138,10 +145,16 @@ class SerialScheduler final : public Scheduler {
 public:
     ScheduleStats run(const std::vector<IndexRange>& todo, const ScheduleOptions& options,
                       const ComputeFn& compute, const SinkFn& sink) override {
-        return run_serial(todo, options, compute, sink);
+        stop_requested_ = options.stop_requested;
+        return run_serial(todo, options, compute, sink, stopping_);
     }
     int rank() const override { return 0; }
     int size() const override { return 1; }
+    bool stop_pending() override { return stopping_ || (stop_requested_ && stop_requested_()); }
+
+private:
+    bool stopping_ = false;
+    std::function<bool()> stop_requested_;
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -150,7 +163,9 @@ public:
 // Messages (on a private duplicate of the caller's communicator, so tags cannot collide):
 //   master -> worker  tag_work    2 x uint64 {first, count}
 //   master -> worker  tag_stop    4 x uint64 {complete, stopped, chunks, cells_done}
+//   master -> worker  tag_halt    1 x uint64: a stop was requested, give up the chunks you hold
 //   worker -> master  tag_result  bytes: {first, count} as 2 x uint64, then count * record_bytes
+//   worker -> master  tag_abandoned  2 x uint64 {first, count}: that chunk was given up, not done
 //
 // The master keeps chunks_per_worker chunks at every worker (one in hand, the others in its
 // mailbox). It refills a worker as soon as it *sees* a result from it (matched probe), before
@@ -160,9 +175,15 @@ public:
 // worker arrive in the order its chunks were handed out.
 //
 // Termination: when nothing is left to hand out (or a stop was requested) and every chunk handed
-// out has been received and sunk, the master sends tag_stop to each worker. A worker leaves on
-// tag_stop; by then all its result sends have been matched, so nothing is left unmatched at
-// MPI_Finalize.
+// out has been received and sunk or reported abandoned, the master sends tag_stop to each
+// worker. A worker leaves on tag_stop; by then all its result sends have been matched, so
+// nothing is left unmatched at MPI_Finalize.
+//
+// Stopping: once stop_requested returns true (or a chunk comes back abandoned) the master sends
+// tag_halt to every worker, once, before its tag_stop. A worker's ComputeFn sees it through
+// stop_pending() (a probe) and gives its chunk up; chunks still in its mailbox are reported
+// abandoned without computing. Both kinds of worker message are matched by one probe on any tag,
+// so they are taken in the order the worker sent them, which is the order of `assigned`.
 //
 // Rule for the master computing: with few ranks a dedicated master wastes a large share of the
 // machine (half of it on 2 ranks), so when size() <= master_computes_up_to (default 8; above it
@@ -173,7 +194,7 @@ public:
 // (1/size) is small and the master's promptness is worth more.
 // ---------------------------------------------------------------------------------------------
 
-enum Tag : int { tag_work = 101, tag_stop = 102, tag_result = 103 };
+enum Tag : int { tag_work = 101, tag_stop = 102, tag_result = 103, tag_halt = 104, tag_abandoned = 105 };
 constexpr std::size_t header_bytes = 2 * sizeof(std::uint64_t);
 
 void mpi_check(int rc, const char* call) {
@@ -264,10 +285,22 @@ public:
 
     int rank() const override { return rank_; }
     int size() const override { return size_; }
+    bool stop_pending() override {
+        if (stopping_) return true;
+        // Rank 0 asks the request itself: its own chunk may be the slow one. The scheduler
+        // loop notices the same answer as soon as that chunk is given up.
+        if (rank_ == 0) return stop_requested_ && stop_requested_();
+        int found = 0;
+        mpi_check(MPI_Iprobe(0, tag_halt, comm_, &found, MPI_STATUS_IGNORE), "MPI_Iprobe");
+        stopping_ = found != 0;
+        return stopping_;
+    }
 
     ScheduleStats run(const std::vector<IndexRange>& todo, const ScheduleOptions& options,
                       const ComputeFn& compute, const SinkFn& sink) override {
-        if (size_ == 1) return run_serial(todo, options, compute, sink);
+        stopping_ = false;
+        stop_requested_ = options.stop_requested;
+        if (size_ == 1) return run_serial(todo, options, compute, sink, stopping_);
         validate(options);
         if (header_bytes + options.max_chunk * options.record_bytes > static_cast<std::size_t>(INT_MAX))
             throw std::invalid_argument("ScheduleOptions: max_chunk * record_bytes exceeds one MPI message (2 GiB)");
@@ -289,6 +322,8 @@ private:
     MPI_Comm comm_ = MPI_COMM_NULL;
     int rank_ = 0;
     int size_ = 1;
+    bool stopping_ = false;
+    std::function<bool()> stop_requested_;
 };
 
 ScheduleStats MpiScheduler::run_master(const std::vector<IndexRange>& todo, const ScheduleOptions& options,
@@ -307,7 +342,13 @@ ScheduleStats MpiScheduler::run_master(const std::vector<IndexRange>& todo, cons
     SmallSends small_sends(comm_);
     Ticker ticker(options);
     Backoff backoff;
-    bool stopping = false;
+    bool& stopping = stopping_;
+    auto begin_stop = [&] {
+        if (stopping) return;
+        stopping = true;
+        stats.stopped = true;
+        for (int worker = 1; worker < size_; ++worker) small_sends.send(worker, tag_halt, {}, 1);
+    };
 
     // Chunks handed to each worker whose result has not been seen yet, oldest first.
     std::vector<std::deque<IndexRange>> assigned(n_ranks);
@@ -346,7 +387,7 @@ ScheduleStats MpiScheduler::run_master(const std::vector<IndexRange>& todo, cons
             int found = 0;
             MPI_Message message;
             MPI_Status status;
-            mpi_check(MPI_Improbe(MPI_ANY_SOURCE, tag_result, comm_, &found, &message, &status), "MPI_Improbe");
+            mpi_check(MPI_Improbe(MPI_ANY_SOURCE, MPI_ANY_TAG, comm_, &found, &message, &status), "MPI_Improbe");
             if (!found) break;
             progressed = true;
             const int worker = status.MPI_SOURCE;
@@ -354,6 +395,20 @@ ScheduleStats MpiScheduler::run_master(const std::vector<IndexRange>& todo, cons
             if (queue.empty()) throw std::logic_error("result from rank " + std::to_string(worker) + " which has no chunk");
             const IndexRange chunk = queue.front();
             queue.pop_front();
+            if (status.MPI_TAG == tag_abandoned) {
+                std::uint64_t header[2] = {0, 0};
+                mpi_check(MPI_Mrecv(header, 2, MPI_UINT64_T, &message, MPI_STATUS_IGNORE), "MPI_Mrecv");
+                if (header[0] != chunk.first || header[1] != chunk.count)
+                    throw std::logic_error("rank " + std::to_string(worker) + " abandoned chunk " + std::to_string(header[0]) +
+                                           "+" + std::to_string(header[1]) + ", expected " + std::to_string(chunk.first) +
+                                           "+" + std::to_string(chunk.count));
+                --outstanding;
+                begin_stop();
+                continue;
+            }
+            if (status.MPI_TAG != tag_result)
+                throw std::logic_error("unexpected message tag " + std::to_string(status.MPI_TAG) + " from rank " +
+                                       std::to_string(worker));
             int bytes = 0;
             mpi_check(MPI_Get_count(&status, MPI_BYTE, &bytes), "MPI_Get_count");
             if (static_cast<std::size_t>(bytes) != header_bytes + chunk.count * record_bytes)
@@ -417,10 +472,7 @@ ScheduleStats MpiScheduler::run_master(const std::vector<IndexRange>& todo, cons
         if (!stopping && options.stop_requested &&
             ((master_computes && !source.empty()) || now - last_stop_poll >= std::chrono::milliseconds(10))) {
             last_stop_poll = now;
-            if (options.stop_requested()) {
-                stopping = true;
-                stats.stopped = true;
-            }
+            if (options.stop_requested()) begin_stop();
         }
 
         // 4. Finished?
@@ -433,7 +485,12 @@ ScheduleStats MpiScheduler::run_master(const std::vector<IndexRange>& todo, cons
             const IndexRange chunk = source.take(piece);
             ++stats.chunks;
             own_records.resize(chunk.count * record_bytes);
-            compute(chunk.first, chunk.count, own_records.data());
+            try {
+                compute(chunk.first, chunk.count, own_records.data());
+            } catch (const ChunkAbandoned&) {
+                begin_stop();
+                continue;
+            }
             sink(chunk.first, chunk.count, own_records.data());
             stats.cells_done += chunk.count;
             stats.cells_per_rank[0] += chunk.count;
@@ -491,15 +548,32 @@ ScheduleStats MpiScheduler::run_worker(const ScheduleOptions& options, const Com
             stats.cells_done = message[3];
             break;
         }
+        if (status.MPI_TAG == tag_halt) {
+            stopping_ = true;
+            continue;
+        }
         if (status.MPI_TAG != tag_work) throw std::logic_error("unexpected message tag " + std::to_string(status.MPI_TAG));
         const std::size_t first = message[0], count = message[1];
         if (count == 0 || count > options.max_chunk)
             throw std::logic_error("chunk of " + std::to_string(count) + " cells received");
+        const std::uint64_t header[2] = {first, count};
+        auto abandon = [&] {
+            // Tiny and matched by the master's next probe: a blocking send costs nothing here.
+            mpi_check(MPI_Send(header, 2, MPI_UINT64_T, 0, tag_abandoned, comm_), "MPI_Send");
+        };
+        if (stop_pending()) {
+            abandon();
+            continue;
+        }
         Outgoing& slot = free_slot();
         slot.buffer.resize(header_bytes + count * options.record_bytes);
-        const std::uint64_t header[2] = {first, count};
         std::memcpy(slot.buffer.data(), header, header_bytes);
-        compute(first, count, slot.buffer.data() + header_bytes);
+        try {
+            compute(first, count, slot.buffer.data() + header_bytes);
+        } catch (const ChunkAbandoned&) {
+            abandon();
+            continue;
+        }
         mpi_check(MPI_Isend(slot.buffer.data(), static_cast<int>(slot.buffer.size()), MPI_BYTE, 0, tag_result, comm_,
                             &slot.request),
                   "MPI_Isend");

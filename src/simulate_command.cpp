@@ -1,6 +1,4 @@
 // `rocksweep simulate`: one time history of one cell, written to HDF5 or CSV.
-#include <unistd.h>
-
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -9,23 +7,13 @@
 #include "rocksweep/errors.hpp"
 #include "rocksweep/history.hpp"
 #include "rocksweep/history_file.hpp"
+#include "rocksweep/output_claim.hpp"
 
 #ifndef ROCKSWEEP_VERSION
 #define ROCKSWEEP_VERSION "unknown"
 #endif
 
 namespace rocksweep {
-
-void require_writable(const std::string& field, const std::string& path) {
-    namespace fs = std::filesystem;
-    if (path.empty()) throw InputError(field, "\"\"", "a file name");
-    const fs::path p(path);
-    const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
-    std::error_code ec;
-    if (!fs::is_directory(dir, ec)) throw InputError(field, path, "a file in an existing directory (" + dir.string() + " does not exist)");
-    if (::access(dir.c_str(), W_OK) != 0) throw InputError(field, path, "a file in a writable directory (" + dir.string() + " is not writable)");
-    if (fs::is_directory(p, ec)) throw InputError(field, path, "a file name, not a directory");
-}
 
 int run_simulate(const Options& o, const SimulateCommand& cmd, const std::string& config_text) {
     const std::string& output = cmd.output;
@@ -34,7 +22,10 @@ int run_simulate(const Options& o, const SimulateCommand& cmd, const std::string
     const IntegratorSettings settings = make_settings(o.numerics);
     const std::string ext = std::filesystem::path(output).extension().string();
     if (ext != ".h5" && ext != ".csv") throw InputError("output", output, "a file name ending in .h5 or .csv");
-    require_writable("output", output);
+    // Claimed before computing: a bad name, a locked or existing output fails at once.
+    const OutputClaim claim("output", output);
+    if (claim.exists() && !cmd.overwrite)
+        throw InputError("output", output, "a new file; it exists: pass --overwrite to replace it");
     const double t_end = o.single.t_end_s > 0.0 ? o.single.t_end_s : default_t_end(m);
     const History h = sample_history(m, settings, o.single.output_dt_s, t_end);
     if (ext == ".csv") {

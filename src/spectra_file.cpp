@@ -39,7 +39,6 @@ std::vector<NamedNumber> root_numbers(const SweepSpec& spec) {
         {"inertia_ratio", b.inertia_ratio},
         {"mass_kg", b.mass_kg},
         {"gravity_m_s2", b.gravity},
-        {"impact_threshold", spec.impact_threshold},
         {"phase_rad", spec.phase},
         {"vertical_g", spec.vertical_g},
         {"vertical_phase_rad", spec.vertical_phase},
@@ -66,6 +65,32 @@ std::vector<NamedText> scenario_texts(const Scenario& s) {
 }
 
 bool same_number(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
+
+// The settings that shape results without defining the cells: a resume must use the same
+// ones, and an error names the option that differs.
+struct Setting {
+    const char* attribute;
+    const char* option;        // as the user writes it, without "--"
+    std::string text;          // what the user gave, for messages and string attributes
+    double number = 0.0;       // for numeric attributes
+    bool is_text = false;
+};
+
+std::vector<Setting> result_settings(const SweepSpec& spec, const IntegratorSettings& s) {
+    auto num = [](const char* attr, const char* option, double x, std::string shown) {
+        return Setting{attr, option, std::move(shown), x, false};
+    };
+    return {
+        {"method", "method", to_string(s.method), 0.0, true},
+        num("steps_per_period", "steps-per-period", s.steps_per_period, format_number(s.steps_per_period)),
+        num("paper_dt_s", "paper-dt", s.paper_dt_s, format_number(s.paper_dt_s)),
+        num("max_steps", "max-steps", static_cast<double>(s.max_steps), std::to_string(s.max_steps)),
+        // 1: a safe block is decided by energy after the pulse; 0: --no-energy-stop.
+        num("energy_stop", "no-energy-stop", s.energy_stop ? 1.0 : 0.0, s.energy_stop ? "not given" : "given"),
+        num("impact_threshold", "impact-threshold", spec.impact_threshold, format_number(spec.impact_threshold)),
+        {"equations", "equations", to_string(spec.equations), 0.0, true},
+    };
+}
 
 void check_columns(const SweepSpec& spec, const SweepResults& r) {
     const std::size_t n = spec.cell_count();
@@ -131,11 +156,17 @@ h5::Dataset write_grid(const h5::Group& group, const char* name, const std::vect
     return ds;
 }
 
-void write_root(const h5::File& f, const SweepSpec& spec, const SweepResults& r) {
+void write_root(const h5::File& f, const SweepSpec& spec, const IntegratorSettings& settings,
+                const SweepResults& r) {
     h5::write_attribute(f, "title", "rocksweep overturning spectra");
     h5::write_attribute(f, "format_version", format_version);
     for (const NamedNumber& n : root_numbers(spec)) h5::write_attribute(f, n.name, n.value);
-    h5::write_attribute(f, "equations", to_string(spec.equations));
+    // Numbers that are integers in meaning (max_steps, energy_stop) stay float64 like the
+    // rest: read back as double they compare exactly (max_steps <= 1e9 < 2^53).
+    for (const Setting& x : result_settings(spec, settings)) {
+        if (x.is_text) h5::write_attribute(f, x.attribute, x.text);
+        else h5::write_attribute(f, x.attribute, x.number);
+    }
     h5::write_attribute(f, "friction_coefficient", spec.friction);  // 0: not checked
     const auto n_done = static_cast<std::int64_t>(
         std::count_if(r.done.begin(), r.done.end(), [](std::uint8_t d) { return d != 0; }));
@@ -229,13 +260,13 @@ void write_scenario(const h5::Group& spectra, std::size_t index, const SweepSpec
     }
 }
 
-void write_provenance(const h5::File& f, const Provenance& prov) {
+void write_provenance(const h5::File& f, const Provenance& prov, const IntegratorSettings& settings) {
     const h5::Group g = f.create_group("provenance");
     h5::write_attribute(g, "version", prov.version);
     h5::write_attribute(g, "config", prov.config_text);
-    h5::write_attribute(g, "method", prov.method);
-    h5::write_attribute(g, "steps_per_period", prov.steps_per_period);
-    h5::write_attribute(g, "paper_dt_s", prov.paper_dt_s);
+    h5::write_attribute(g, "method", to_string(settings.method));
+    h5::write_attribute(g, "steps_per_period", settings.steps_per_period);
+    h5::write_attribute(g, "paper_dt_s", settings.paper_dt_s);
     h5::write_attribute(g, "created_utc", prov.created_utc);
     h5::write_attribute(g, "ranks", prov.ranks);
     h5::write_attribute(g, "wall_s", prov.wall_s);
@@ -243,17 +274,15 @@ void write_provenance(const h5::File& f, const Provenance& prov) {
 
 // All objects opened here are closed on return, so the caller can close the file.
 void write_contents(const h5::File& f, const SweepSpec& spec, const SweepResults& r,
-                    const Provenance& prov) {
-    write_root(f, spec, r);
-    // The numerics that shape the results are part of the result; they stay in /provenance too.
-    h5::write_attribute(f, "method", prov.method);
-    h5::write_attribute(f, "steps_per_period", prov.steps_per_period);
-    h5::write_attribute(f, "paper_dt_s", prov.paper_dt_s);
+                    const Provenance& prov, const IntegratorSettings& settings) {
+    // The numerics that shape the results are part of the result (root); they stay in
+    // /provenance too.
+    write_root(f, spec, settings, r);
     h5::write_attribute(f, "rocksweep_version", prov.version);
     const Axes axes = write_axes(f, spec);
     const h5::Group spectra = f.create_group("spectra");
     for (std::size_t i = 0; i < spec.scenarios.size(); ++i) write_scenario(spectra, i, spec, r, axes);
-    write_provenance(f, prov);
+    write_provenance(f, prov, settings);
 }
 
 // ---------------------------------------------------------------------------------------
@@ -291,6 +320,21 @@ void compare_text(const std::string& path, const h5::Object& obj, const char* na
                            expected + "' in the config");
 }
 
+void compare_setting(const std::string& path, const h5::File& f, const Setting& x) {
+    std::string in_file;
+    if (x.is_text) {
+        in_file = h5::read_string_attribute(f, x.attribute);
+        if (in_file == x.text) return;
+    } else {
+        const double value = h5::read_double_attribute(f, x.attribute);
+        if (value == x.number) return;
+        in_file = std::string(x.option) == "no-energy-stop" ? (value != 0.0 ? "not given" : "given") : format_number(value);
+    }
+    throw InputError(x.option, x.text,
+                     in_file + ", as " + path + " was computed with (--resume continues a file only with the settings "
+                               "that shaped its results)");
+}
+
 template <h5::Element T>
 void read_grid(const std::string& path, const h5::Group& g, const char* name,
                std::vector<T>& column, std::size_t scenario, const SweepSpec& spec) {
@@ -304,11 +348,12 @@ void read_grid(const std::string& path, const h5::Group& g, const char* name,
               column.begin() + static_cast<std::ptrdiff_t>(scenario * n_amp * n_omega));
 }
 
-SweepResults read_contents(const std::string& path, const h5::File& f, const SweepSpec& spec) {
+SweepResults read_contents(const std::string& path, const h5::File& f, const SweepSpec& spec,
+                           const IntegratorSettings& settings) {
     compare_axis(path, f, "omega_ratio", spec.omega_ratio);
     compare_axis(path, f, "amplitude_ratio", spec.amplitude_ratio);
     for (const NamedNumber& n : root_numbers(spec)) compare_number(path, f, n);
-    compare_text(path, f, "equations", to_string(spec.equations));
+    for (const Setting& x : result_settings(spec, settings)) compare_setting(path, f, x);
 
     const h5::Group spectra = f.open_group("spectra");
     std::vector<std::string> in_file = spectra.children();
@@ -348,16 +393,17 @@ SweepResults read_contents(const std::string& path, const h5::File& f, const Swe
 }  // namespace
 
 void write_spectra(const std::string& path, const SweepSpec& spec, const SweepResults& r,
-                   const Provenance& prov) {
+                   const Provenance& prov, const IntegratorSettings& settings) {
     check_columns(spec, r);
     check_scenario_names(spec);
-    h5::publish_h5_atomically(path, [&](const h5::File& f) { write_contents(f, spec, r, prov); });
+    h5::publish_h5_atomically(path, [&](const h5::File& f) { write_contents(f, spec, r, prov, settings); });
 }
 
-SweepResults read_spectra_results(const std::string& path, const SweepSpec& spec) {
+SweepResults read_spectra_results(const std::string& path, const SweepSpec& spec,
+                                  const IntegratorSettings& settings) {
     try {
         const h5::File f = h5::File::open_read_only(path);
-        return read_contents(path, f, spec);
+        return read_contents(path, f, spec, settings);
     } catch (const Hdf5Error& e) {
         // A missing attribute or dataset means this is not a file we wrote for this layout.
         throw InputError("spectra file", path,

@@ -3,11 +3,13 @@
 #include <csignal>
 #include <cstring>
 #include <ctime>
-#include <filesystem>
 #include <iostream>
+#include <optional>
 
 #include "rocksweep/cli.hpp"
 #include "rocksweep/errors.hpp"
+#include "rocksweep/integrator.hpp"
+#include "rocksweep/output_claim.hpp"
 #include "rocksweep/progress.hpp"
 #include "rocksweep/refine.hpp"
 #include "rocksweep/scheduler.hpp"
@@ -24,8 +26,10 @@ namespace {
 volatile std::sig_atomic_t g_signal = 0;
 extern "C" void note_signal(int sig) { g_signal = sig; }
 
-/// SIGINT/SIGTERM only raise a flag while a sweep runs: rank 0 then stops handing out work,
-/// gathers what is in flight and saves it.
+/// SIGINT/SIGTERM only raise a flag while a sweep runs (from before its output is claimed to the
+/// end of its last save, so a signal never kills a save half-way and leaves NAME.tmp): the
+/// integration polls it and gives up its chunk, rank 0 stops handing out work, gathers what is
+/// done and saves it.
 class SignalGuard {
 public:
     SignalGuard() {
@@ -68,45 +72,47 @@ std::vector<IndexRange> missing_ranges(const SweepResults& r) {
     return todo;
 }
 
-/// Rank 0's view of the output before any work: where the results start from.
+/// Rank 0's view of the output before any work: the output held for this run, and where the
+/// results start from.
 struct Start {
+    std::optional<OutputClaim> claim;
     SweepResults results;
     std::vector<IndexRange> todo;
 };
 
-Start prepare_output(const SweepSpec& spec, const SweepCommand& cmd, std::ostream& log) {
-    namespace fs = std::filesystem;
-    require_writable("output", cmd.output);
+void prepare_output(Start& s, const SweepSpec& spec, const IntegratorSettings& settings, const SweepCommand& cmd,
+                    std::ostream& log) {
     if (cmd.resume && cmd.overwrite) throw InputError("resume", "with --overwrite", "one of --resume, --overwrite");
-    Start s;
+    s.claim.emplace("output", cmd.output);
     s.results.resize(spec.cell_count());
-    const bool exists = fs::exists(cmd.output);
+    const bool exists = s.claim->exists();
     if (exists && cmd.resume) {
-        s.results = read_spectra_results(cmd.output, spec);
+        s.results = read_spectra_results(cmd.output, spec, settings);
         log << "resuming " << cmd.output << ": " << s.results.done_count() << " of " << spec.cell_count()
             << " cells already done\n";
     } else if (exists && !cmd.overwrite) {
         throw InputError("output", cmd.output, "a new file; it exists: pass --resume to continue it or --overwrite to replace it");
     }
     s.todo = missing_ranges(s.results);
-    return s;
 }
 
 }  // namespace
 
 int run_sweep(const Options& opts, const SweepCommand& cmd, const std::string& config_text, const MpiSession& mpi) {
     const SweepSpec spec = make_sweep_spec(opts);  // the same on every rank, so is any error
-    const IntegratorSettings settings = make_settings(opts.numerics);
+    IntegratorSettings settings = make_settings(opts.numerics);
     RootStream log(mpi);
+    const SignalGuard signals;
 
-    // The output is checked on rank 0 only; the verdict reaches every rank before any work.
+    // The output is claimed on rank 0 only; the verdict reaches every rank before any work.
     Start start;
     int verdict = 0;
     std::string why;
     if (mpi.is_root()) {
         try {
-            start = prepare_output(spec, cmd, log);
+            prepare_output(start, spec, settings, cmd, log);
         } catch (const InputError& e) {
+            start.claim.reset();  // releases the output before the message
             verdict = 2;
             why = cli_message(e);
         }
@@ -120,9 +126,6 @@ int run_sweep(const Options& opts, const SweepCommand& cmd, const std::string& c
     Provenance prov;
     prov.version = ROCKSWEEP_VERSION;
     prov.config_text = config_text;
-    prov.method = to_string(settings.method);
-    prov.steps_per_period = settings.steps_per_period;
-    prov.paper_dt_s = settings.paper_dt_s;
     prov.created_utc = utc_now();
     prov.ranks = mpi.size();
 
@@ -131,27 +134,42 @@ int run_sweep(const Options& opts, const SweepCommand& cmd, const std::string& c
     std::size_t done_now = 0;
     const double t0 = MPI_Wtime();
     double last_save = t0;
+    // A failed save (e.g. a full disk) stops the run like a signal, so that every rank leaves
+    // the scheduler normally; rank 0 reports it once at the end.
+    std::string save_error;
     auto save = [&] {
         prov.wall_s = MPI_Wtime() - t0;
-        write_spectra(cmd.output, spec, results, prov);
+        try {
+            write_spectra(cmd.output, spec, results, prov, settings);
+        } catch (const std::exception& e) {
+            if (save_error.empty()) save_error = e.what();
+        }
         last_save = MPI_Wtime();
     };
     Progress* progress = nullptr;
+    const auto scheduler = make_mpi_scheduler(mpi.comm());
 
     ScheduleOptions so;
     so.record_bytes = sizeof(CellResult);
     so.max_chunk = cmd.max_chunk;
     so.min_chunk = std::min<std::size_t>(8, cmd.max_chunk);
-    so.stop_requested = [] { return g_signal != 0; };
+    so.stop_requested = [&] { return g_signal != 0 || !save_error.empty(); };
     so.tick_interval_s = std::min(0.5, cmd.checkpoint_s / 2);
     so.on_tick = [&] {
         if (progress) progress->update(done_now);
         if (MPI_Wtime() - last_save >= cmd.checkpoint_s) save();
     };
+    // A slow cell polls this every few hundred steps: a stop is honoured in the middle of a
+    // chunk, which is then abandoned (not done) rather than finished.
+    settings.stop_requested = [&] { return g_signal != 0 || scheduler->stop_pending(); };
     const int lanes = opts.numerics.lanes;
     const ComputeFn compute = [&](std::size_t first, std::size_t count, std::byte* out) {
         std::vector<CellResult> buf(count);
-        compute_cells(spec, settings, first, count, buf.data(), lanes);
+        try {
+            compute_cells(spec, settings, first, count, buf.data(), lanes);
+        } catch (const Interrupted&) {
+            throw ChunkAbandoned();
+        }
         std::memcpy(out, buf.data(), count * sizeof(CellResult));
     };
     const SinkFn sink = [&](std::size_t first, std::size_t count, const std::byte* records) {
@@ -162,18 +180,13 @@ int run_sweep(const Options& opts, const SweepCommand& cmd, const std::string& c
         }
         done_now += count;
     };
-    const auto scheduler = make_mpi_scheduler(mpi.comm());
     auto run_pass = [&](const std::vector<IndexRange>& todo) {
         std::size_t n = 0;
         for (const IndexRange& r : todo) n += r.count;
         Progress bar(n, cmd.quiet || !mpi.is_root());
         progress = &bar;
         done_now = 0;
-        ScheduleStats stats;
-        {
-            SignalGuard guard;
-            stats = scheduler->run(todo, so, compute, sink);
-        }
+        const ScheduleStats stats = scheduler->run(todo, so, compute, sink);
         bar.update(done_now);
         bar.finish();
         progress = nullptr;
@@ -208,8 +221,14 @@ int run_sweep(const Options& opts, const SweepCommand& cmd, const std::string& c
             for (std::size_t s = 0; s < spec.scenarios.size(); ++s)
                 refine.fill(&results.outcome[s * per], &results.done[s * per]);
     }
-    if (!mpi.is_root()) return stopped ? 128 + (g_signal ? g_signal : SIGINT) : 0;
-    save();
+    // Rank 0 alone decides the job's status: a worker that exited non-zero first would make
+    // mpirun kill rank 0, maybe in the middle of its last save.
+    if (!mpi.is_root()) return 0;
+    if (save_error.empty()) save();
+    if (!save_error.empty()) {
+        log << "rocksweep: error: " << save_error << "\n";
+        return 1;
+    }
     const std::size_t done = results.done_count();
     if (done < total) {
         const int sig = g_signal ? g_signal : SIGINT;

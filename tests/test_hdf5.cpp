@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <bit>
+#include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -11,6 +12,7 @@
 #include <iterator>
 #include <sstream>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include <unistd.h>
@@ -20,6 +22,7 @@
 #include "rocksweep/errors.hpp"
 #include "rocksweep/hdf5.hpp"
 #include "rocksweep/history_file.hpp"
+#include "rocksweep/output_claim.hpp"
 #include "rocksweep/spectra_file.hpp"
 
 namespace fs = std::filesystem;
@@ -86,9 +89,6 @@ Provenance some_provenance() {
     Provenance p;
     p.version = "0.1.0";
     p.config_text = "[sweep]\nomega-ratio = [1, 4]\n";
-    p.method = "events";
-    p.steps_per_period = 48;
-    p.paper_dt_s = 0.0025;
     p.created_utc = "2024-01-02T03:04:05Z";
     p.ranks = 3;
     p.wall_s = 12.5;
@@ -148,18 +148,18 @@ TEST(SpectraFile, RoundTripIsExactAndLeavesNoTmp) {
     const SweepSpec spec = small_spec();
     const SweepResults r = known_results(spec);
     const std::string path = dir.file("spectra.h5");
-    write_spectra(path, spec, r, some_provenance());
+    write_spectra(path, spec, r, some_provenance(), IntegratorSettings{});
 
     EXPECT_TRUE(fs::exists(path));
     EXPECT_FALSE(fs::exists(path + ".tmp"));
-    expect_same_results(read_spectra_results(path, spec), r);
+    expect_same_results(read_spectra_results(path, spec, IntegratorSettings{}), r);
 }
 
 TEST(SpectraFile, LayoutAxesScalesAndAttributes) {
     TempDir dir;
     const SweepSpec spec = small_spec();
     const std::string path = dir.file("spectra.h5");
-    write_spectra(path, spec, known_results(spec), some_provenance());
+    write_spectra(path, spec, known_results(spec), some_provenance(), IntegratorSettings{});
 
     const h5::File f = h5::File::open_read_only(path);
     EXPECT_TRUE(f.exists("spectra/free/outcome"));
@@ -239,8 +239,8 @@ TEST(SpectraFile, SameInputsGiveByteIdenticalFiles) {
     TempDir dir;
     const SweepSpec spec = small_spec();
     const SweepResults r = known_results(spec);
-    write_spectra(dir.file("a.h5"), spec, r, some_provenance());
-    write_spectra(dir.file("b.h5"), spec, r, some_provenance());
+    write_spectra(dir.file("a.h5"), spec, r, some_provenance(), IntegratorSettings{});
+    write_spectra(dir.file("b.h5"), spec, r, some_provenance(), IntegratorSettings{});
     auto slurp = [](const std::string& p) {
         std::ifstream in(p, std::ios::binary);
         return std::string(std::istreambuf_iterator<char>(in), {});
@@ -260,7 +260,7 @@ TEST(SpectraFile, CompleteWhenEveryCellIsDone) {
     TempDir dir;
     const SweepSpec spec = small_spec();
     const std::string path = dir.file("spectra.h5");
-    write_spectra(path, spec, known_results(spec, true), some_provenance());
+    write_spectra(path, spec, known_results(spec, true), some_provenance(), IntegratorSettings{});
     const h5::File f = h5::File::open_read_only(path);
     EXPECT_EQ(h5::read_int64_attribute(f, "complete"), 1);
     EXPECT_EQ(h5::read_int64_attribute(f, "n_done"), 24);
@@ -271,7 +271,7 @@ TEST(SpectraFile, MissingDirectoryThrowsAndLeavesNoFile) {
     const SweepSpec spec = small_spec();
     const std::string path = dir.file("no_such_dir/spectra.h5");
     try {
-        write_spectra(path, spec, known_results(spec), some_provenance());
+        write_spectra(path, spec, known_results(spec), some_provenance(), IntegratorSettings{});
         FAIL() << "expected InputError";
     } catch (const InputError& e) {
         EXPECT_EQ(e.field(), "output");
@@ -288,7 +288,7 @@ TEST(SpectraFile, FailedRenameIsAnInputErrorAndLeavesNoTmp) {
     const std::string path = dir.file("taken.h5");
     fs::create_directory(path);
     try {
-        write_spectra(path, spec, known_results(spec), some_provenance());
+        write_spectra(path, spec, known_results(spec), some_provenance(), IntegratorSettings{});
         FAIL() << "expected InputError";
     } catch (const InputError& e) {
         EXPECT_EQ(e.field(), "output");
@@ -303,15 +303,15 @@ TEST(SpectraFile, FailureMidWriteKeepsThePreviousFile) {
     const SweepSpec spec = small_spec();
     const std::string path = dir.file("spectra.h5");
     const SweepResults first = known_results(spec);
-    write_spectra(path, spec, first, some_provenance());
+    write_spectra(path, spec, first, some_provenance(), IntegratorSettings{});
 
     // A NUL inside the config text cannot go into a C string attribute: the writer fails
     // after the tmp file has been created and most of it written.
     Provenance bad = some_provenance();
     bad.config_text = std::string("a\0b", 3);
-    EXPECT_THROW(write_spectra(path, spec, known_results(spec, true), bad), Hdf5Error);
+    EXPECT_THROW(write_spectra(path, spec, known_results(spec, true), bad, IntegratorSettings{}), std::runtime_error);
     EXPECT_FALSE(fs::exists(path + ".tmp"));
-    expect_same_results(read_spectra_results(path, spec), first);
+    expect_same_results(read_spectra_results(path, spec, IntegratorSettings{}), first);
 }
 
 TEST(SpectraFile, RejectsMismatchedColumnsAndBadNames) {
@@ -319,13 +319,13 @@ TEST(SpectraFile, RejectsMismatchedColumnsAndBadNames) {
     SweepSpec spec = small_spec();
     SweepResults r = known_results(spec);
     r.impacts.pop_back();
-    EXPECT_THROW(write_spectra(dir.file("a.h5"), spec, r, some_provenance()), std::invalid_argument);
+    EXPECT_THROW(write_spectra(dir.file("a.h5"), spec, r, some_provenance(), IntegratorSettings{}), std::invalid_argument);
 
     spec.scenarios[1].name = "free";  // a repeated group name
-    EXPECT_THROW(write_spectra(dir.file("a.h5"), spec, known_results(spec), some_provenance()),
+    EXPECT_THROW(write_spectra(dir.file("a.h5"), spec, known_results(spec), some_provenance(), IntegratorSettings{}),
                  InputError);
     spec.scenarios[1].name = "a/b";
-    EXPECT_THROW(write_spectra(dir.file("a.h5"), spec, known_results(spec), some_provenance()),
+    EXPECT_THROW(write_spectra(dir.file("a.h5"), spec, known_results(spec), some_provenance(), IntegratorSettings{}),
                  InputError);
     EXPECT_FALSE(fs::exists(dir.file("a.h5")));
 }
@@ -334,11 +334,11 @@ TEST(SpectraFile, ReadRejectsADifferentSweep) {
     TempDir dir;
     const SweepSpec spec = small_spec();
     const std::string path = dir.file("spectra.h5");
-    write_spectra(path, spec, known_results(spec), some_provenance());
+    write_spectra(path, spec, known_results(spec), some_provenance(), IntegratorSettings{});
 
     auto expect_rejected = [&](const SweepSpec& other, const std::string& mentions) {
         try {
-            read_spectra_results(path, other);
+            read_spectra_results(path, other, IntegratorSettings{});
             ADD_FAILURE() << "expected InputError mentioning " << mentions;
         } catch (const InputError& e) {
             const std::string what = e.what();
@@ -374,7 +374,7 @@ TEST(SpectraFile, ReadRejectsADifferentSweep) {
 
 TEST(SpectraFile, ReadOfMissingFileIsAnInputError) {
     TempDir dir;
-    EXPECT_THROW(read_spectra_results(dir.file("absent.h5"), small_spec()), InputError);
+    EXPECT_THROW(read_spectra_results(dir.file("absent.h5"), small_spec(), IntegratorSettings{}), InputError);
 }
 
 // ---------------------------------------------------------------------------------------
@@ -571,4 +571,76 @@ TEST(HistoryFile, CsvInMissingDirectoryThrows) {
     EXPECT_THROW(write_history_csv(path, known_history(3)), InputError);
     EXPECT_FALSE(fs::exists(path));
     EXPECT_FALSE(fs::exists(path + ".tmp"));
+}
+
+// ---------------------------------------------------------------------------------------
+// Failed saves and the claimed output
+
+TEST(Publish, FullDiskIsOneLineAndKeepsThePreviousFile) {
+    TempDir dir;
+    const std::string path = dir.file("out.h5");
+    { std::ofstream(path) << "previous save"; }
+    const auto disk_full = [](const std::string& tmp) {
+        { std::ofstream(tmp) << "half"; }
+        throw std::system_error(ENOSPC, std::generic_category(), "writing " + tmp);
+    };
+    try {
+        h5::publish_atomically(path, disk_full);
+        ADD_FAILURE() << "expected std::runtime_error";
+    } catch (const std::runtime_error& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "cannot write " + path + ": no space left on device (" + path + " still holds the previous save)");
+    }
+    EXPECT_FALSE(fs::exists(path + ".tmp"));
+    std::ifstream in(path);
+    std::string kept;
+    std::getline(in, kept);
+    EXPECT_EQ(kept, "previous save");
+
+    // An HDF5 failure carries errno the same way; without a previous file there is no note.
+    const std::string fresh = dir.file("fresh.h5");
+    try {
+        h5::publish_atomically(fresh, [](const std::string&) { throw Hdf5Error("writing dataset 'x': ...", EDQUOT); });
+        ADD_FAILURE() << "expected std::runtime_error";
+    } catch (const std::runtime_error& e) {
+        EXPECT_EQ(std::string(e.what()), "cannot write " + fresh + ": no space left on device");
+    }
+    EXPECT_FALSE(fs::exists(fresh));
+}
+
+TEST(OutputClaim, SecondClaimOfTheSameOutputFailsUntilTheFirstEnds) {
+    TempDir dir;
+    const std::string path = dir.file("out.h5");
+    {
+        const OutputClaim first("output", path);
+        EXPECT_TRUE(fs::exists(path + ".lock"));
+        EXPECT_FALSE(fs::exists(path + ".tmp")) << "the creation proof leaves no file";
+        try {
+            const OutputClaim second("output", path);
+            ADD_FAILURE() << "expected InputError";
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find("another rocksweep holds " + path + ".lock"), std::string::npos)
+                << e.what();
+        }
+        { std::ofstream(path + ".tmp") << "partial"; }  // a save cut short
+    }
+    EXPECT_FALSE(fs::exists(path + ".tmp")) << "the claim removes its partial save";
+    EXPECT_FALSE(fs::exists(path + ".lock"));
+    EXPECT_NO_THROW(OutputClaim("output", path));
+}
+
+TEST(OutputClaim, RefusesWhatCannotBeWrittenAndTouchesNothing) {
+    TempDir dir;
+    const std::string path = dir.file("out.h5");
+    fs::create_directory(path + ".tmp");
+    EXPECT_THROW(OutputClaim("output", path), InputError);
+    EXPECT_TRUE(fs::is_directory(path + ".tmp")) << "never deleted";
+    EXPECT_FALSE(fs::exists(path + ".lock"));
+
+    EXPECT_THROW(OutputClaim("output", dir.file(std::string(251, 'n') + ".h5")), InputError);  // NAME.lock > 255
+    EXPECT_NO_THROW(OutputClaim("output", dir.file(std::string(250, 'n'))));                    // exactly fits
+    EXPECT_THROW(OutputClaim("output", dir.file("missing/out.h5")), InputError);
+    EXPECT_THROW(OutputClaim("output", dir.path().string()), InputError);  // a directory
+    EXPECT_THROW(OutputClaim("output", "/proc/out.h5"), InputError);
+    EXPECT_THROW(OutputClaim("output", ""), InputError);
 }

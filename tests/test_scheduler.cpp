@@ -232,6 +232,48 @@ TEST_P(SchedulerTest, StopBeforeStartComputesNothing) {
     EXPECT_TRUE(outcome.computed.empty());
 }
 
+TEST_P(SchedulerTest, AnAbandonedChunkIsNeverSunkAndStopsTheRun) {
+    ScheduleOptions options;
+    options.record_bytes = 8;
+    options.max_chunk = 10;
+    options.min_chunk = 10;
+    std::vector<std::byte> scratch(10 * 8);
+    std::vector<IndexRange> computed;
+    std::vector<int> sunk(100, 0);
+    auto scheduler = make();
+    const ScheduleStats stats = scheduler->run(
+        {{0, 100}}, options,
+        [&](std::size_t first, std::size_t count, std::byte* out) {
+            computed.push_back({first, count});
+            if (first == 30) throw ChunkAbandoned();  // a stop arrived in the middle of it
+            for (std::size_t i = 0; i < count; ++i) fill_record(first + i, out + i * 8, 8);
+        },
+        [&](std::size_t first, std::size_t count, const std::byte*) {
+            for (std::size_t i = 0; i < count; ++i) ++sunk.at(first + i);
+        });
+    EXPECT_TRUE(stats.stopped);
+    EXPECT_FALSE(stats.complete);
+    EXPECT_TRUE(scheduler->stop_pending());
+    // Chunks 0, 10, 20 done; 30 abandoned; nothing after it handed out.
+    ASSERT_EQ(computed.size(), 4u);
+    EXPECT_EQ(computed.back().first, 30u);
+    EXPECT_EQ(stats.cells_done, 30u);
+    for (std::size_t i = 0; i < 100; ++i) EXPECT_EQ(sunk[i], i < 30 ? 1 : 0) << "index " << i;
+}
+
+TEST_P(SchedulerTest, StopPendingIsFalseWhileRunningNormally) {
+    ScheduleOptions options;
+    options.record_bytes = 8;
+    options.max_chunk = 10;
+    auto scheduler = make();
+    bool seen = false;
+    scheduler->run(
+        {{0, 50}}, options, [&](std::size_t, std::size_t, std::byte*) { seen = seen || scheduler->stop_pending(); },
+        [](std::size_t, std::size_t, const std::byte*) {});
+    EXPECT_FALSE(seen);
+    EXPECT_FALSE(scheduler->stop_pending());
+}
+
 TEST_P(SchedulerTest, OnTickIsCalledWhileWorking) {
     ScheduleOptions options;
     options.record_bytes = 8;

@@ -26,13 +26,11 @@ int run_sweep(const Options& opts, const SweepCommand& cmd, const std::string& c
 struct SimulateCommand {
     std::string output;
     bool quiet = false;
+    bool overwrite = false;  ///< replace an existing output file (refused otherwise)
 };
 
 /// One history on this rank (call it on one rank only); writes `cmd.output`. Returns the exit
 /// status.
 int run_simulate(const Options& opts, const SimulateCommand& cmd, const std::string& config_text);
-
-/// Throws InputError unless `path` can be created: its directory exists and is writable.
-void require_writable(const std::string& field, const std::string& path);
 
 }  // namespace rocksweep

@@ -21,7 +21,13 @@ namespace rocksweep {
 /// A failed HDF5 call. what() = "<what we were doing>: <HDF5's error stack, innermost last>".
 class Hdf5Error : public std::runtime_error {
 public:
-    using std::runtime_error::runtime_error;
+    explicit Hdf5Error(const std::string& what, int sys_errno = 0)
+        : std::runtime_error(what), sys_errno_(sys_errno) {}
+    /// errno as the failed call left it (e.g. ENOSPC from a write), 0 when none was set.
+    int sys_errno() const noexcept { return sys_errno_; }
+
+private:
+    int sys_errno_ = 0;
 };
 
 namespace h5 {
@@ -50,10 +56,14 @@ public:
 
     hid_t id() const noexcept { return id_; }
     bool valid() const noexcept { return id_ >= 0; }
-    /// Releases the handle now. Throws Hdf5Error if HDF5 reports a failure (e.g. a file that
-    /// cannot be flushed, or still has open objects); the handle then keeps its id and the
-    /// destructor tries once more.
+    /// Releases the handle now. Throws Hdf5Error if HDF5 reports a failure; the handle then
+    /// keeps its id and the destructor tries once more.
     void close();
+
+protected:
+    /// Gives the id up without closing it (HDF5 has already disposed of it, or it is unsafe to
+    /// touch again).
+    void forget() noexcept { id_ = H5I_INVALID_HID; }
 
 private:
     void release() noexcept;
@@ -111,6 +121,12 @@ public:
 class Dataset;
 class Group;
 
+/// The bytes of a file made by File::create_in_memory, filled when it is closed.
+struct MemoryImage {
+    std::vector<unsigned char> bytes;
+    std::size_t driver_size = 0;  ///< bookkeeping: the size of the driver's buffer
+};
+
 /// A file or a group: something that holds links to groups and datasets.
 class Location : public Object {
 public:
@@ -150,9 +166,27 @@ public:
     static File create(const std::string& path);
     /// Opens an existing file read-only. Throws Hdf5Error naming the path.
     static File open_read_only(const std::string& path);
+    /// Creates a file held in memory only (HDF5's core driver, no backing store): `name` is
+    /// for messages; nothing reaches the disk. When it is closed, its final bytes (what the
+    /// file on disk would hold, then zero padding; its size is what H5Fget_file_image reports
+    /// before the close) land in `image.bytes`; `image` must outlive the file. Throws Hdf5Error.
+    static File create_in_memory(const std::string& name, MemoryImage& image);
+
+    /// The path it was created or opened with (messages are built from it, never by asking
+    /// HDF5 about a file that may be failing).
+    const std::string& path() const noexcept { return path_; }
+
+    /// Flushes and closes the file. Throws Hdf5Error naming path():
+    /// - if objects opened from it are still open: the file stays open and the destructor
+    ///   closes it once they are gone;
+    /// - if the flush fails (e.g. no space left on device): the id is given up, since HDF5
+    ///   leaves a file whose close failed in a state that must not be touched again.
+    void close();
 
 private:
-    explicit File(hid_t id) noexcept : Location(id, H5Fclose) {}
+    static File create_with(const std::string& path, const PropertyList& fapl);
+    File(hid_t id, std::string path) noexcept : Location(id, H5Fclose), path_(std::move(path)) {}
+    std::string path_;
 };
 
 // ---------------------------------------------------------------------------------------
@@ -259,14 +293,23 @@ void set_dimension_label(const Dataset& data, unsigned dim, std::string_view lab
 // Publishing a file (not HDF5-specific; the CSV writer uses it too)
 
 /// Calls write(path + ".tmp") and, once it returns, renames the tmp file onto `path`, so a
-/// reader never sees a half-written `path`. If `write` throws, the tmp file is removed and the
-/// exception propagates (`path` is untouched). If the rename fails, the tmp file is removed
-/// and InputError("output", path, "a writable location ...") is thrown.
+/// reader never sees a half-written `path`. If `write` throws, the tmp file is removed and
+/// `path` is untouched: InputError and std::invalid_argument propagate as they are; any other
+/// failure (Hdf5Error, std::system_error, ...) becomes std::runtime_error("cannot write PATH:
+/// REASON"), REASON "no space left on device" when errno says the disk or quota is full,
+/// followed by a note that `path` still holds the previous save if there is one.
+/// If the rename fails, the tmp file is removed and InputError("output", path, ...) is thrown.
 void publish_atomically(const std::string& path,
                         const std::function<void(const std::string& tmp_path)>& write);
 
-/// publish_atomically for an HDF5 file: creates it at the tmp name (InputError naming `path`
-/// if that fails), lets `write` fill it, closes it (flush errors surface before the rename).
+/// Writes `bytes` to `path` (created or truncated) and fsyncs it, so that a rename that follows
+/// publishes data that is on the disk. Throws InputError("output", output, ...) if `path`
+/// cannot be created, std::system_error carrying errno if writing it fails.
+void write_file_bytes(const std::string& path, std::span<const unsigned char> bytes, const std::string& output);
+
+/// publish_atomically for an HDF5 file: `write` fills a file built in memory, whose bytes are
+/// then written to the tmp name by write_file_bytes. HDF5 itself never meets a full disk (a
+/// failed flush inside HDF5 leaves its library state broken, up to a crash at exit).
 void publish_h5_atomically(const std::string& path, const std::function<void(const File&)>& write);
 
 }  // namespace h5

@@ -22,7 +22,7 @@ void write_history_h5(const std::string& path, const History& h,
 /// Writes `h` as CSV (via path + ".tmp" and a rename): a header naming each column with its
 /// unit (t_s,theta_rad,...), then one row per sample at full precision (%.17g; NaN as "nan").
 /// Throws std::invalid_argument if the columns differ in length, InputError if `path` cannot
-/// be created, std::runtime_error if writing fails.
+/// be created, std::runtime_error ("cannot write PATH: ...") if writing fails.
 void write_history_csv(const std::string& path, const History& h);
 
 }  // namespace rocksweep

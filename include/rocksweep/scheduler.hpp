@@ -4,6 +4,7 @@
 #include <mpi.h>
 
 #include <cstddef>
+#include <exception>
 #include <functional>
 #include <memory>
 #include <vector>
@@ -17,9 +18,18 @@ struct IndexRange {
 /// Computes records [first, first + count) into `out` (count * record_bytes bytes).
 /// A record must depend only on its index: results are then identical for any rank count and
 /// chunk size (the scheduler never touches the bytes of a record).
+/// It may give its chunk up by throwing ChunkAbandoned, e.g. when Scheduler::stop_pending()
+/// turns true in the middle of slow cells.
 using ComputeFn = std::function<void(std::size_t first, std::size_t count, std::byte* out)>;
 /// Receives finished records on rank 0, in any order.
 using SinkFn = std::function<void(std::size_t first, std::size_t count, const std::byte* records)>;
+
+/// Thrown by a ComputeFn that gave its chunk up because a stop was requested. The chunk is not
+/// done: it never reaches the sink, and the run stops as if stop_requested had returned true.
+class ChunkAbandoned : public std::exception {
+public:
+    const char* what() const noexcept override { return "chunk abandoned on a stop request"; }
+};
 
 /// Must be equal on every rank, except the callbacks, which only rank 0 calls.
 struct ScheduleOptions {
@@ -37,9 +47,10 @@ struct ScheduleOptions {
     int master_computes_up_to = 8;
 
     /// Polled on rank 0 (about every 10 ms, and before each chunk rank 0 computes itself).
-    /// Once it returns true no new chunk is handed out; chunks already handed out are finished
-    /// and sunk (up to chunks_per_worker chunk times), then run() returns normally on every rank
-    /// with `stopped` set.
+    /// Once it returns true no new chunk is handed out and every worker is told so
+    /// (Scheduler::stop_pending() turns true there); chunks already handed out are finished and
+    /// sunk, or abandoned (ChunkAbandoned) and left undone, then run() returns normally on every
+    /// rank with `stopped` set.
     std::function<bool()> stop_requested;
     /// Called on rank 0 every tick_interval_s while run() waits or works (between chunks when
     /// rank 0 computes), e.g. to checkpoint and print progress. Not called after the last chunk.
@@ -72,6 +83,11 @@ public:
                               const ComputeFn& compute, const SinkFn& sink) = 0;
     virtual int rank() const = 0;
     virtual int size() const = 0;
+    /// True once this run is stopping: on rank 0 when stop_requested returns true (asked
+    /// afresh) or a chunk was abandoned, on a worker once rank 0's stop notice has arrived. Cheap (one
+    /// MPI_Iprobe), callable from inside ComputeFn, so that a chunk of slow cells can be given
+    /// up within a fraction of a second of the request.
+    virtual bool stop_pending() = 0;
 };
 
 /// One process, no messages: chunks of max_chunk in order, sink after each.

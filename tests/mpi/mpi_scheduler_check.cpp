@@ -6,6 +6,8 @@
 //   --mode check         the default, above
 //   --mode stop          a stop requested from on_tick part-way: run() must return on every rank,
 //                        every chunk computed must reach the sink, and the result says "stopped"
+//   --mode abandon       slow chunks (2 s each) that poll stop_pending(); a stop requested 0.2 s
+//                        in must end run() on every rank within 1 s, with no abandoned chunk sunk
 //   --mode throw-worker  compute throws on rank 1: the job must abort with "ERROR on rank 1"
 //   --mode throw-master  compute throws on rank 0: the job must abort with "ERROR on rank 0"
 #include "rocksweep/mpi_session.hpp"
@@ -17,7 +19,9 @@
 #include <cstring>
 #include <numeric>
 #include <stdexcept>
+#include <chrono>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace {
@@ -203,6 +207,50 @@ int run_stop(const MpiSession& session, RootStream& out) {
     return failures;
 }
 
+int run_abandon(const MpiSession& session, RootStream& out) {
+    auto scheduler = make_mpi_scheduler(session.comm());
+    ScheduleOptions options;
+    options.record_bytes = 8;
+    options.max_chunk = 4;
+    options.min_chunk = 4;
+    options.tick_interval_s = 0.01;
+    const double start = MPI_Wtime();
+    options.stop_requested = [&] { return MPI_Wtime() - start > 0.2; };
+    std::vector<int> times(64, 0);
+    const ScheduleStats stats = scheduler->run(
+        {{0, 64}}, options,
+        [&](std::size_t first, std::size_t count, std::byte* records) {
+            // A chunk of slow cells: 2 s unless a stop is noticed, as the integrator does.
+            const double begun = MPI_Wtime();
+            while (MPI_Wtime() - begun < 2.0) {
+                if (scheduler->stop_pending()) throw ChunkAbandoned();
+                std::this_thread::sleep_for(std::chrono::milliseconds(1));
+            }
+            for (std::size_t i = 0; i < count; ++i) fill_record(first + i, records + i * 8, 8, 0);
+        },
+        [&](std::size_t first, std::size_t count, const std::byte*) {
+            for (std::size_t i = 0; i < count; ++i) ++times.at(first + i);
+        });
+    const double wall = MPI_Wtime() - start;
+    int failures = 0;
+    auto fail = [&](const std::string& what) {
+        ++failures;
+        std::cerr << "FAIL [abandon] rank " << session.rank() << ": " << what << '\n';
+    };
+    if (!stats.stopped) fail("not reported as stopped");
+    if (stats.complete) fail("reported complete");
+    if (!scheduler->stop_pending()) fail("stop_pending() false after a stop");
+    if (wall > 1.2) fail("run() took " + std::to_string(wall) + " s; a stop must end it within about 1 s");
+    if (session.is_root()) {
+        std::size_t sunk = 0;
+        for (int n : times) sunk += static_cast<std::size_t>(n);
+        if (sunk != 0) fail(std::to_string(sunk) + " cells of abandoned chunks reached the sink");
+        if (stats.cells_done != 0) fail("cells_done " + std::to_string(stats.cells_done));
+        out << "[abandon] run() ended after " << wall << " s\n";
+    }
+    return failures;
+}
+
 int run_throw(const MpiSession& session, int failing_rank) {
     auto scheduler = make_mpi_scheduler(session.comm());
     ScheduleOptions options;
@@ -228,7 +276,7 @@ int main(int argc, char** argv) {
     CLI::App app{"Checks the MPI scheduler; run under mpirun with any number of ranks."};
     std::string mode = "check";
     app.add_option("--mode", mode, "what to check")
-        ->check(CLI::IsMember({"check", "stop", "throw-worker", "throw-master"}))
+        ->check(CLI::IsMember({"check", "stop", "abandon", "throw-worker", "throw-master"}))
         ->capture_default_str();
     try {
         app.parse(argc, argv);
@@ -242,6 +290,8 @@ int main(int argc, char** argv) {
             failures = run_checks(session, out);
         else if (mode == "stop")
             failures = run_stop(session, out);
+        else if (mode == "abandon")
+            failures = run_abandon(session, out);
         else if (mode == "throw-worker")
             failures = run_throw(session, 1);
         else

@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# resume_settings.sh ROCKSWEEP CONFIG DIR: --resume refuses a file computed with another value of
+# any setting that shapes results (exit 2, one line naming the option, the given value and the
+# file's), and leaves the file byte for byte as it was.
+set -u
+rs="$1"; cfg="$2"; dir="$3"
+rm -rf "$dir"; mkdir -p "$dir"; out="$dir/partial.h5"
+fail() { echo "FAIL: $*"; exit 1; }
+grid=(--anchorages free --omega-ratio-points 4 --amplitude-ratio-points 3 --quiet)
+"$rs" sweep --config "$cfg" "${grid[@]}" -o "$out" || fail "first sweep"
+sum=$(md5sum < "$out")
+n=0
+check() {  # check REGEX OPTIONS...: --resume with OPTIONS must be refused with REGEX
+  local regex="$1"; shift
+  local err status
+  err=$("$rs" sweep --config "$cfg" "${grid[@]}" "$@" -o "$out" --resume 2>&1 >/dev/null); status=$?
+  echo "$* -> $err"
+  [ "$status" -eq 2 ] || fail "$*: exit status $status, expected 2"
+  [ "$(grep -c . <<<"$err")" -eq 1 ] || fail "$*: not one line"
+  grep -Eq -- "$regex" <<<"$err" || fail "$*: message does not match /$regex/"
+  [ "$(md5sum < "$out")" = "$sum" ] || fail "$*: the file changed"
+  [ ! -e "$out.tmp" ] && [ ! -e "$out.lock" ] || fail "$*: tmp or lock left"
+  n=$((n + 1))
+}
+tail="as $out was computed with \(--resume continues a file only with the settings that shaped its results\)"
+check "^rocksweep: error: --method = paper is invalid: events, $tail" --method paper
+check "^rocksweep: error: --steps-per-period = 96 is invalid: 48, $tail" --steps-per-period 96
+check "^rocksweep: error: --paper-dt = 0.001 is invalid: 0.0025, $tail" --paper-dt 0.001
+check "^rocksweep: error: --max-steps = 5000 is invalid: 2000000, $tail" --max-steps 5000
+check "^rocksweep: error: --no-energy-stop = given is invalid: not given, $tail" --no-energy-stop
+check "^rocksweep: error: --impact-threshold = 0.002 is invalid: 0.001, $tail" --impact-threshold 0.002
+check "^rocksweep: error: --equations = linearised is invalid: nonlinear, $tail" --equations linearised
+# Settings that do not change a bit (lanes, chunk) are free to differ.
+"$rs" sweep --config "$cfg" "${grid[@]}" --lanes 4 --chunk 3 -o "$out" --resume || fail "lanes/chunk refused"
+echo "ok: $n settings refused"
