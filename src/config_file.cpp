@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <iterator>
 #include <map>
 
@@ -82,7 +83,7 @@ private:
         while (!done() && (peek() == ' ' || peek() == '\t')) ++i_;
     }
     void skip_comment() {
-        while (!done() && peek() != '\n') {
+        while (!done() && peek() != '\n' && !(peek() == '\r' && peek(1) == '\n')) {
             check_char(peek(), "a comment");
             ++i_;
         }
@@ -215,7 +216,11 @@ private:
             any_digit = any_digit || is_digit(c);
             out += c;
         }
-        if (!any_digit) fail("'" + shorten(w) + "' is not a value (a string needs quotes)");
+        // What is left must be one number: 1979-05-27 is made of the same characters.
+        char* end = nullptr;
+        std::strtod(out.c_str(), &end);
+        if (!any_digit || end != out.c_str() + out.size())
+            fail("'" + shorten(w) + "' is not a value (a string needs quotes; dates are not used by rocksweep)");
         return out;
     }
 

@@ -142,7 +142,7 @@ bad_config(unknown_table "2: table \\[foo\\] is not one of rocksweep's: \\[sweep
 bad_config(misplaced_underscore "1: '3__361' is not a number \\(an underscore must sit between two digits\\)" "mass = 3__361\n")
 bad_config(unclosed_array "2: an array without its closing '\\]'" "mass = 1\nkmin-ratios = [0.5,\n 0.1\n")
 bad_config(empty_array "1: an empty array" "anchorages = []\n")
-bad_config(unquoted_string "1: 'nonlinear' is not a value \\(a string needs quotes" "equations = nonlinear\n")
+bad_config(unquoted_string "1: 'nonlinear' is not a value \\(a string needs quotes; dates are not used by rocksweep\\)" "equations = nonlinear\n")
 bad_config(inline_table "1: inline tables" "block = { mass = 1 }\n")
 
 # Valid TOML that CLI11's reader refused reads as the flat config does: `info` prints the same.
