@@ -57,19 +57,35 @@ TEST(TomlConfig, ReadsTablesMultiLineArraysUnderscoresAndStrings) {
 }
 
 TEST(TomlConfig, RefusesWithTheLine) {
-    EXPECT_EQ(refusal("a = 1\nb = 2\na = 3\n"), "line 3: key 'a' is set twice (first on line 1)");
-    EXPECT_EQ(refusal("mass = 1\n[block]\nmass = 2\n"), "line 3: key 'mass' is set twice (first on line 1)");
-    EXPECT_EQ(refusal("a = 1\nb\xEF\xBB\xBF = 2\n"), "line 2: expected '=' after a key, found a byte-order mark (U+FEFF)");
-    EXPECT_EQ(refusal("[tables]\n"), "line 1: table [tables] is not one of rocksweep's: [sweep], [simulate], [block], [grid]");
-    EXPECT_EQ(refusal("x = [1,\n2\n"), "line 1: an array without its closing ']'");
-    EXPECT_EQ(refusal("x = 1__0\n"), "line 1: '1__0' is not a number (an underscore must sit between two digits)");
-    EXPECT_EQ(refusal("x = _10\n"), "line 1: '_10' is not a number (an underscore must sit between two digits)");
-    EXPECT_EQ(refusal("x = 1 2\n"), "line 1: unexpected '2' after the value (one key = value per line)");
-    EXPECT_EQ(refusal("x = [[1]]\n"), "line 1: arrays inside arrays are not used by rocksweep");
-    EXPECT_EQ(refusal("x = 1979-05-27\n"), "line 1: '1979-05-27' is not a value (a string needs quotes; dates are not used by rocksweep)");
-    EXPECT_EQ(refusal("x = \"a\n"), "line 1: a string without its closing quote");
-    EXPECT_EQ(refusal("[grid]\n[grid]\n"), "line 2: table [grid] is defined twice (first on line 1)");
-    EXPECT_EQ(refusal("grid.block.x = 1\n"), "line 1: key 'x' is in table [grid]; the tables are [sweep], [simulate], [block], [grid]");
+    const std::pair<std::string, std::string> cases[] = {
+        {"a = 1\nb = 2\na = 3\n",
+         "line 3: key 'a' is set twice (first on line 1)"},
+        {"mass = 1\n[block]\nmass = 2\n",
+         "line 3: key 'mass' is set twice (first on line 1)"},
+        {"a = 1\nb\xEF\xBB\xBF = 2\n",
+         "line 2: expected '=' after a key, found a byte-order mark (U+FEFF)"},
+        {"[tables]\n",
+         "line 1: table [tables] is not one of rocksweep's: [sweep], [simulate], [block], [grid]"},
+        {"x = [1,\n2\n",
+         "line 1: an array without its closing ']'"},
+        {"x = 1__0\n",
+         "line 1: '1__0' is not a number (an underscore must sit between two digits)"},
+        {"x = _10\n",
+         "line 1: '_10' is not a number (an underscore must sit between two digits)"},
+        {"x = 1 2\n",
+         "line 1: unexpected '2' after the value (one key = value per line)"},
+        {"x = [[1]]\n",
+         "line 1: arrays inside arrays are not used by rocksweep"},
+        {"x = 1979-05-27\n",
+         "line 1: '1979-05-27' is not a value (a string needs quotes; dates are not used by rocksweep)"},
+        {"x = \"a\n",
+         "line 1: a string without its closing quote"},
+        {"[grid]\n[grid]\n",
+         "line 2: table [grid] is defined twice (first on line 1)"},
+        {"grid.block.x = 1\n",
+         "line 1: key 'x' is in table [grid]; the tables are [sweep], [simulate], [block], [grid]"},
+    };
+    for (const auto& [text, message] : cases) EXPECT_EQ(refusal(text), message) << text;
 }
 
 TEST(TomlConfig, ReadsWhatConfigTomlWrites) {
