@@ -158,8 +158,13 @@ std::string parse_message(const CLI::App& app, const CLI::ParseError& e, const s
         }
     }
     const std::string extra = "INI was not able to parse ";
-    if (what.rfind(extra, 0) == 0)
-        return "config key '" + shorten(what.substr(extra.size())) + "' is not an option of rocksweep (see rocksweep --help)";
+    if (what.rfind(extra, 0) == 0) {
+        const std::string key = what.substr(extra.size());
+        for (const std::string& s : subcommands)  // a command's own option outside its table
+            if (app.get_subcommand(s)->get_option_no_throw("--" + key))
+                return "config key '" + key + "' is an option of rocksweep " + s + ": put it in the config's [" + s + "] table";
+        return "config key '" + shorten(key) + "' is not an option of rocksweep (see rocksweep --help)";
+    }
     const std::vector<const CLI::App*> chosen = app.get_subcommands([](const CLI::App* s) { return s->parsed(); });
     std::vector<std::string> left;
     for (const CLI::App* a : chosen) for (const std::string& r : a->remaining()) left.push_back(r);

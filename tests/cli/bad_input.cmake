@@ -143,6 +143,9 @@ bad_config(misplaced_underscore "1: '3__361' is not a number \\(an underscore mu
 bad_config(unclosed_array "2: an array without its closing '\\]'" "mass = 1\nkmin-ratios = [0.5,\n 0.1\n")
 bad_config(empty_array "1: an empty array" "anchorages = []\n")
 bad_config(unquoted_string "1: 'nonlinear' is not a value \\(a string needs quotes; dates are not used by rocksweep\\)" "equations = nonlinear\n")
+file(WRITE ${B}/command_key_at_top.toml "mass = 1000\npulse = \"sine\"\n")
+bad_input(config_command_key_at_top "config key 'pulse' is an option of rocksweep simulate: put it in the config's \\[simulate\\] table"
+          simulate --config ${B}/command_key_at_top.toml -o ${OUT})
 bad_config(inline_table "1: inline tables" "block = { mass = 1 }\n")
 
 # Valid TOML that CLI11's reader refused reads as the flat config does: `info` prints the same.
