@@ -11,7 +11,13 @@ InputError::InputError(const std::string& field, const std::string& value, const
       value_(shorten(value)),
       allowed_(allowed) {}
 
-std::string format_number(double x, int digits) {
+std::string format_number(double x) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.10g", x);
+    return buf;
+}
+
+std::string format_short(double x, int digits) {
     char buf[64];
     std::snprintf(buf, sizeof buf, "%.*g", digits, x);
     // "1e+308" reads better, and is what a user types, as "1e308".

@@ -45,7 +45,7 @@ std::string join(const std::vector<std::string>& v) {
 
 std::string format_bound(double x) {
     if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
-    return format_number(x, 6);
+    return format_short(x, 6);
 }
 
 CLI::Validator number_in(double lo, double hi, const std::string& unit, bool open_lo, bool open_hi) {

@@ -33,6 +33,9 @@ public:
     bool config_default(const std::string& name) const {
         return source(name) == Source::config && at_default(*option(name));
     }
+    /// Set, wherever, to the value it has anyway: ignoring it loses nothing the user meant
+    /// (scripts pass --kmin-ratio 0.5 to every anchorage in a loop).
+    bool at_default_value(const std::string& name) const { return (*this)(name) && at_default(*option(name)); }
     /// The value as given: the option's results, space-separated.
     std::string value(const std::string& name) const {
         std::string out;
@@ -64,9 +67,10 @@ void excludes(const Given& given, const std::string& option, const std::string& 
     throw InputError(option.substr(2), given.value(option), "not together with " + other + " " + given.value(other) + " (" + why + ")");
 }
 
-/// `option` must not be given unless `condition` holds; `needed` says what would make it hold.
+/// `option` must not be given unless `condition` holds (or at its default, which changes
+/// nothing); `needed` says what would make it hold.
 void only_if(const Given& given, const std::string& option, bool condition, const std::string& needed) {
-    if (given(option) && !condition && !given.config_default(option)) throw InputError(option.substr(2), given.value(option), "only with " + needed);
+    if (given(option) && !condition && !given.at_default_value(option)) throw InputError(option.substr(2), given.value(option), "only with " + needed);
 }
 
 void check_block(const Given& given) {

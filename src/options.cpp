@@ -42,27 +42,27 @@ constexpr double history_bytes_per_sample = 8 * sizeof(double);
 bool is_equivalent(const BlockOptions& o) { return o.radius_m > 0.0 || o.alpha_rad > 0.0; }
 
 OptionNames block_names(const BlockOptions& o) {
-    OptionNames n{{"block.mass", {"mass", format_number(o.mass_kg), ""}},
-                  {"block.gravity", {"gravity", format_number(o.gravity), ""}},
-                  {"block.restitution", {"restitution", format_number(o.restitution), ""}}};
+    OptionNames n{{"block.mass", {"mass", format_short(o.mass_kg), ""}},
+                  {"block.gravity", {"gravity", format_short(o.gravity), ""}},
+                  {"block.restitution", {"restitution", format_short(o.restitution), ""}}};
     if (!is_equivalent(o)) {
         // The physics' values already say which other size they were judged with.
         n["block.half_width"] = {"half-width", "", ""};
         n["block.half_height"] = {"half-height", "", ""};
-        n["block.alpha"] = {"half-width", format_number(o.half_width_m) + " (with h = " + format_number(o.half_height_m) + " m)", ""};
+        n["block.alpha"] = {"half-width", format_short(o.half_width_m) + " (with h = " + format_short(o.half_height_m) + " m)", ""};
         return n;
     }
-    n["block.radius"] = {"radius", format_number(o.radius_m), ""};
-    n["block.alpha"] = {"alpha", format_number(o.alpha_rad), ""};
+    n["block.radius"] = {"radius", format_short(o.radius_m), ""};
+    n["block.alpha"] = {"alpha", format_short(o.alpha_rad), ""};
     if (o.p > 0.0) {
         // p fixes I0/(m R^2) = g / (p^2 R); its bounds [1, max] become bounds on p.
         const double hi = std::sqrt(o.gravity / o.radius_m), lo = std::sqrt(o.gravity / (max_inertia_ratio * o.radius_m));
-        const std::string range = "p in [" + format_number(lo) + ", " + format_number(hi) +
+        const std::string range = "p in [" + format_short(lo) + ", " + format_short(hi) +
                                   "] rad/s for this R and g (1 <= I0/(m R^2) = g/(p^2 R) <= 1e4)";
-        n["block.p"] = {"frequency-parameter", format_number(o.p), range};
-        n["block.inertia_ratio"] = {"frequency-parameter", format_number(o.p), range};
+        n["block.p"] = {"frequency-parameter", format_short(o.p), range};
+        n["block.inertia_ratio"] = {"frequency-parameter", format_short(o.p), range};
     } else {
-        n["block.inertia_ratio"] = {"inertia-ratio", format_number(o.inertia_ratio), ""};
+        n["block.inertia_ratio"] = {"inertia-ratio", format_short(o.inertia_ratio), ""};
     }
     return n;
 }
@@ -70,11 +70,11 @@ OptionNames block_names(const BlockOptions& o) {
 /// Names for an anchorage built from a theta_f / alpha ratio given as `ratio_option`.
 OptionNames anchorage_names(const Block& b, double strength_ratio, const std::string& ratio_option, double ratio,
                             const std::string& kmin_option, double kmin) {
-    return {{"anchorage.strength", {"strength-ratio", format_number(strength_ratio), ""}},
+    return {{"anchorage.strength", {"strength-ratio", format_short(strength_ratio), ""}},
             {"anchorage.theta_f",
-             {ratio_option, format_number(ratio),
-              "0 < theta_f / alpha < pi / alpha = " + format_number(M_PI / b.alpha_rad, 4) + " for this block (theta_f below pi rad)"}},
-            {"anchorage.kmin_ratio", {kmin_option, format_number(kmin), ""}}};
+             {ratio_option, format_short(ratio),
+              "0 < theta_f / alpha < pi / alpha = " + format_short(M_PI / b.alpha_rad, 4) + " for this block (theta_f below pi rad)"}},
+            {"anchorage.kmin_ratio", {kmin_option, format_short(kmin), ""}}};
 }
 
 BreakRule parse_break_rule(const std::string& s) {
@@ -86,7 +86,7 @@ BreakRule parse_break_rule(const std::string& s) {
 Axis make_axis(const std::string& name, const std::vector<double>& range, std::size_t points) {
     if (range.size() != 2) throw InputError(name + "-range", std::to_string(range.size()) + " values", "two values LO HI");
     const double lo = range[0], hi = range[1];
-    const std::string shown = format_number(lo) + " " + format_number(hi);
+    const std::string shown = format_short(lo) + " " + format_short(hi);
     if (!(std::isfinite(lo) && std::isfinite(hi) && lo > 0.0))
         throw InputError(name + "-range", shown, "finite LO HI with 0 < LO <= HI");
     if (hi < lo) throw InputError(name + "-range", shown, "LO <= HI (the grid is reversed)");
@@ -213,7 +213,7 @@ SweepSpec make_sweep_spec(const Options& o) {
     require_memory("omega-ratio-points", std::to_string(spec.omega_ratio.points),
                    cells * static_cast<double>(SweepResults::bytes_per_cell()),
                    "with --amplitude-ratio-points " + std::to_string(spec.amplitude_ratio.points) + " and " +
-                       std::to_string(spec.scenarios.size()) + " scenario(s), the results of " + format_number(cells) + " cells");
+                       std::to_string(spec.scenarios.size()) + " scenario(s), the results of " + format_short(cells) + " cells");
     return spec;
 }
 
@@ -241,7 +241,7 @@ CellModel make_single_cell(const Options& o) {
     }
     const double strength = o.anchorage.strength_ratio * b.mass_kg * b.gravity;
     OptionNames names = anchorage_names(b, o.anchorage.strength_ratio, "theta-f-ratio", s.theta_f_ratio, "kmin-ratio", s.kmin_ratio);
-    names["anchorage.stiffness"] = {"stiffness", format_number(s.stiffness), ""};
+    names["anchorage.stiffness"] = {"stiffness", format_short(s.stiffness), ""};
     const Anchorage a = naming_options(names, [&] {
         if (s.anchorage == "free") return free_anchorage();
         if (s.anchorage == "constant")
@@ -255,9 +255,9 @@ CellModel make_single_cell(const Options& o) {
     // The history holds every sample in memory before it is written: refuse one that cannot fit.
     const double t_end = s.t_end_s > 0.0 ? s.t_end_s : default_t_end(m);
     const double samples = std::floor(t_end / s.output_dt_s) + 1.0;
-    require_memory("output-dt", format_number(s.output_dt_s), samples * history_bytes_per_sample,
-                   (s.t_end_s > 0.0 ? "with --t-end " : "with the default t_end of ") + format_number(t_end) + " s, " +
-                       "a history of " + format_number(samples) + " samples");
+    require_memory("output-dt", format_short(s.output_dt_s), samples * history_bytes_per_sample,
+                   (s.t_end_s > 0.0 ? "with --t-end " : "with the default t_end of ") + format_short(t_end) + " s, " +
+                       "a history of " + format_short(samples) + " samples");
     return m;
 }
 

@@ -34,7 +34,9 @@ std::string shorten(const std::string& text, std::size_t max_chars = 60);
 void require_open(const std::string& field, double x, double lo, double hi, const std::string& allowed);
 /// Throws InputError unless lo <= x <= hi — NaN is always rejected.
 void require_closed(const std::string& field, double x, double lo, double hi, const std::string& allowed);
+/// `x` with 10 significant digits in C's form (1e+300, 1e-05), as messages have long shown it.
+std::string format_number(double x);
 /// `x` with `digits` significant digits, exponents as a user types them: 1e308, 2.5e-7.
-std::string format_number(double x, int digits = 10);
+std::string format_short(double x, int digits = 10);
 
 }  // namespace rocksweep

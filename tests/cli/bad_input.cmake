@@ -83,8 +83,8 @@ bad_input(stiffness_free "--stiffness = 1e5 is invalid: only with --anchorage co
           simulate --stiffness 1e5 -o ${OUT})
 bad_input(stiffness_and_theta_f "--stiffness = 1e5 is invalid: not together with --theta-f-ratio 0.5"
           simulate --anchorage constant --stiffness 1e5 --theta-f-ratio 0.5 -o ${OUT})
-bad_input(kmin_ratio_constant "--kmin-ratio = 0.5 is invalid: only with --anchorage adaptive"
-          simulate --anchorage constant --kmin-ratio 0.5 -o ${OUT})
+bad_input(kmin_ratio_constant "--kmin-ratio = 0.3 is invalid: only with --anchorage adaptive"
+          simulate --anchorage constant --kmin-ratio 0.3 -o ${OUT})
 bad_input(theta_f_free "--theta-f-ratio = 0.5 is invalid: only with --anchorage constant or adaptive"
           simulate --theta-f-ratio 0.5 -o ${OUT})
 bad_input(record_units_without_record "--record-units = g is invalid: only with --record"
