@@ -42,13 +42,12 @@ bool adaptive_uses_kmax(bool excitation_acting, double ax, double theta, double 
 Anchorage free_anchorage() { return Anchorage{}; }
 
 static void check_strength(double strength_n) {
-    require_open("strength-ratio", strength_n, 0.0, INFINITY, "F_u / (m g) > 0");
+    require_open("anchorage.strength", strength_n, 0.0, INFINITY, "a finite strength F_u > 0 N");
 }
 
 Anchorage constant_anchorage(const Block& b, double strength_n, double theta_f_rad) {
     check_strength(strength_n);
-    require_open("theta-f-ratio", theta_f_rad / b.alpha_rad, 0.0, M_PI / b.alpha_rad,
-                 "0 < theta_f / alpha < pi / alpha (theta_f below pi rad)");
+    require_open("anchorage.theta_f", theta_f_rad, 0.0, M_PI, "0 < theta_f < pi rad");
     Anchorage a;
     a.kind = AnchorageKind::constant;
     a.strength_n = strength_n;
@@ -59,14 +58,18 @@ Anchorage constant_anchorage(const Block& b, double strength_n, double theta_f_r
 
 Anchorage constant_anchorage_k(const Block& b, double strength_n, double k) {
     check_strength(strength_n);
-    require_open("stiffness", k, 0.0, INFINITY, "K > 0 N/m");
-    return constant_anchorage(b, strength_n, fracture_angle(b, strength_n, k));
+    require_open("anchorage.stiffness", k, 0.0, INFINITY, "a finite K > 0 N/m");
+    const double theta_f = fracture_angle(b, strength_n, k);
+    // So soft a spring that F_u is reached only at theta = pi never breaks: refuse it as K.
+    if (!(theta_f < M_PI))
+        throw InputError("anchorage.stiffness", format_number(k),
+                         "K large enough that theta_f = 2 atan(F_u / (4 b K)) < pi rad (F_u = " + format_number(strength_n) + " N)");
+    return constant_anchorage(b, strength_n, theta_f);
 }
 
 Anchorage adaptive_anchorage(const Block& b, double strength_n, double theta_f_rad, double rho,
                              BreakRule rule) {
-    require_closed("kmin-ratio", rho, 0.0, 1.0, "0 < K_min / K_max <= 1");
-    if (!(rho > 0.0)) throw InputError("kmin-ratio", format_number(rho), "0 < K_min / K_max <= 1");
+    if (!(rho > 0.0 && rho <= 1.0)) throw InputError("anchorage.kmin_ratio", format_number(rho), "0 < K_min / K_max <= 1");
     Anchorage a = constant_anchorage(b, strength_n, theta_f_rad);
     a.kind = AnchorageKind::adaptive;
     a.k_min = rho * a.k_max;

@@ -6,9 +6,13 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <regex>
 #include <sstream>
 
+#include "rocksweep/config_file.hpp"
 #include "rocksweep/errors.hpp"
+#include "rocksweep/option_checks.hpp"
+#include "rocksweep/option_combinations.hpp"
 
 #ifndef ROCKSWEEP_VERSION
 #define ROCKSWEEP_VERSION "unknown"
@@ -18,106 +22,87 @@ namespace rocksweep {
 
 namespace {
 
-/// A number in [lo, hi] (open ends where asked); NaN and infinities are never in range.
-CLI::Validator number_in(double lo, double hi, bool open_lo = false, bool open_hi = false) {
-    std::ostringstream range;
-    range << (open_lo ? "(" : "[") << lo << ", " << hi << (open_hi ? ")" : "]");
-    const std::string allowed = range.str();
-    return CLI::Validator(
-        [=](std::string& in) -> std::string {
-            double x;
-            std::size_t used = 0;
-            try {
-                x = std::stod(in, &used);
-            } catch (const std::exception&) {
-                return "value " + in + " is not a number; allowed range " + allowed;
-            }
-            const bool ok = used == in.size() && std::isfinite(x) && (open_lo ? x > lo : x >= lo) &&
-                            (open_hi ? x < hi : x <= hi);
-            if (!ok) return "value " + in + " is outside the allowed range " + allowed;
-            return {};
-        },
-        allowed, "NUMBER IN " + allowed);
-}
-
-CLI::Validator positive() { return number_in(0.0, INFINITY, true, true); }
+// Ranges: what a physicist would accept for a block, a pulse or an anchorage, and no wider, so
+// that no derived quantity can overflow or vanish in the kernel (README, "Command line").
+const std::string m = "m", kg = "kg", rad = "rad", none;
 
 void add_model_options(CLI::App& app, Options& o) {
     BlockOptions& b = o.block;
     const char* blk = "Block";
+    // Sizes from a 1 mm specimen to a 1 km tower; masses from 1 g to a 1 Mt monolith.
     app.add_option("--half-width", b.half_width_m, "Half-width b of the rectangular block [m]")
-        ->check(positive())->capture_default_str()->group(blk);
-    app.add_option("--half-height", b.half_height_m, "Half-height h [m]")->check(positive())->capture_default_str()->group(blk);
-    app.add_option("--mass", b.mass_kg, "Mass m [kg]")->check(positive())->capture_default_str()->group(blk);
+        ->check(number_in(1e-3, 1e3, m))->capture_default_str()->group(blk);
+    app.add_option("--half-height", b.half_height_m, "Half-height h [m]")->check(number_in(1e-3, 1e3, m))->capture_default_str()->group(blk);
+    app.add_option("--mass", b.mass_kg, "Mass m [kg]")->check(number_in(1e-3, 1e9, kg))->capture_default_str()->group(blk);
     app.add_option("--radius", b.radius_m, "Equivalent block: R, corner to centre of mass [m] (with --alpha)")
-        ->check(positive())->group(blk);
-    app.add_option("--alpha", b.alpha_rad, "Equivalent block: slenderness angle [rad]")
-        ->check(number_in(0, M_PI / 2, true, true))->group(blk);
+        ->check(number_in(1e-3, 1e3, m))->group(blk);
+    app.add_option("--alpha", b.alpha_rad, "Equivalent block: slenderness angle [rad] (with --radius)")
+        ->check(number_in(min_alpha_rad, M_PI / 2, rad, false, true))->group(blk);
     app.add_option("--inertia-ratio", b.inertia_ratio, "Equivalent block: I0/(m R^2) (default 4/3)")
-        ->check(number_in(1.0, 1e6))->group(blk);
+        ->check(number_in(1.0, max_inertia_ratio, none))->group(blk);
     app.add_option("--frequency-parameter", b.p, "Equivalent block: p [rad/s] instead of --inertia-ratio")
-        ->check(positive())->group(blk);
-    app.add_option("--gravity", b.gravity, "g [m/s^2]")->check(number_in(0, 1e3, true))->capture_default_str()->group(blk);
+        ->check(number_in(1e-2, 1e3, "rad/s"))->group(blk);
+    app.add_option("--gravity", b.gravity, "g [m/s^2]")->check(number_in(0.1, 100, "m/s^2"))->capture_default_str()->group(blk);
     app.add_option("--restitution", b.restitution, "Impact velocity ratio e, at most Housner's (default: Housner's)")
-        ->check(number_in(0, 1, true))->group(blk);
+        ->check(number_in(0, 1, none, true))->group(blk);
     app.add_option("--equations", b.equations, "nonlinear | linearised (sin x = x, cos x = 1)")
-        ->check(CLI::IsMember({"nonlinear", "linearised", "linearized"}))->capture_default_str()->group(blk);
+        ->check(one_of({"nonlinear", "linearised", "linearized"}))->capture_default_str()->group(blk);
 
     const char* pul = "Pulse";
     app.add_option("--phase", o.pulse.phase, "Phase psi of the one-sine pulse [rad]")
-        ->check(number_in(-2 * M_PI, 2 * M_PI))->capture_default_str()->group(pul);
+        ->check(number_in(-2 * M_PI, 2 * M_PI, rad))->capture_default_str()->group(pul);
     app.add_option("--vertical-amplitude", o.pulse.vertical_g, "Vertical pulse amplitude a_v0 / g (same frequency and window)")
-        ->check(number_in(-0.99, 0.99))->capture_default_str()->group(pul);
+        ->check(number_in(-0.99, 0.99, none))->capture_default_str()->group(pul);
     app.add_option("--vertical-phase", o.pulse.vertical_phase, "Phase of the vertical pulse [rad]")
-        ->check(number_in(-2 * M_PI, 2 * M_PI))->capture_default_str()->group(pul);
+        ->check(number_in(-2 * M_PI, 2 * M_PI, rad))->capture_default_str()->group(pul);
 
     app.add_option("--friction-coefficient", o.base.friction,
                    "Static friction mu_s of the base: report the cells that need more to rock without sliding "
                    "(0: not checked)")
-        ->check(number_in(0, 100))->capture_default_str()->group(pul);
+        ->check(number_in(0, 100, none))->capture_default_str()->group(pul);
 
     const char* anc = "Anchorage";
     app.add_option("--strength-ratio", o.anchorage.strength_ratio, "Anchorage strength F_u / (m g)")
-        ->check(number_in(0, 1e3, true))->capture_default_str()->group(anc);
+        ->check(number_in(0, 1e3, none, true))->capture_default_str()->group(anc);
     app.add_option("--adaptive-break", o.anchorage.break_rule,
                    "Adaptive restrainer breaks at the K_max spring's angle, or when the force reaches F_u")
-        ->check(CLI::IsMember({"angle", "force"}))->capture_default_str()->group(anc);
+        ->check(one_of({"angle", "force"}))->capture_default_str()->group(anc);
 
     GridOptions& g = o.grid;
     const char* grd = "Sweep grid and scenarios";
     app.add_option("--omega-ratio-range", g.omega_range, "omega_p / p from LO to HI")
-        ->expected(2)->check(positive())->capture_default_str()->group(grd);
+        ->expected(2)->check(number_in(1e-3, 1e3, none))->capture_default_str()->group(grd);
     app.add_option("--omega-ratio-points", g.omega_points, "Points on the omega_p / p axis, both ends included")
-        ->check(CLI::Range(std::size_t{1}, std::size_t{100000}))->capture_default_str()->group(grd);
+        ->check(integer_in(1, 100000))->capture_default_str()->group(grd);
     app.add_option("--amplitude-ratio-range", g.amplitude_range, "a_p0 / (alpha g) from LO to HI")
-        ->expected(2)->check(positive())->capture_default_str()->group(grd);
+        ->expected(2)->check(number_in(1e-3, 1e3, none))->capture_default_str()->group(grd);
     app.add_option("--amplitude-ratio-points", g.amplitude_points, "Points on the a_p0 / (alpha g) axis")
-        ->check(CLI::Range(std::size_t{1}, std::size_t{100000}))->capture_default_str()->group(grd);
+        ->check(integer_in(1, 100000))->capture_default_str()->group(grd);
     app.add_option("--anchorages", g.anchorages, "Scenario kinds: free, constant, adaptive")
-        ->check(CLI::IsMember({"free", "constant", "adaptive"}))->capture_default_str()->group(grd);
+        ->check(one_of({"free", "constant", "adaptive"}))->capture_default_str()->group(grd);
     app.add_option("--theta-f-ratios", g.theta_f_ratios, "Constant K: fracture angles theta_f / alpha, one scenario each")
-        ->check(number_in(0, 14.4, true))->capture_default_str()->group(grd);
+        ->check(number_in(1e-3, 1e3, none))->capture_default_str()->group(grd);
     app.add_option("--kmin-ratios", g.kmin_ratios, "Adaptive: K_min / K_max, one scenario each")
-        ->check(number_in(0, 1, true))->capture_default_str()->group(grd);
+        ->check(number_in(1e-6, 1, none))->capture_default_str()->group(grd);
     app.add_option("--adaptive-theta-f-ratio", g.adaptive_theta_f_ratio, "Adaptive: theta_f / alpha of the K_max spring")
-        ->check(number_in(0, 14.4, true))->capture_default_str()->group(grd);
+        ->check(number_in(1e-3, 1e3, none))->capture_default_str()->group(grd);
     app.add_option("--scenario", g.only, "Run only this scenario (repeatable); names as `rocksweep info` lists")->group(grd);
 
     NumericsOptions& n = o.numerics;
     const char* num = "Numerics";
     app.add_option("--method", n.method, "events (RK4, every discontinuity located) | paper (fixed dt, for comparison)")
-        ->check(CLI::IsMember({"events", "paper"}))->capture_default_str()->group(num);
+        ->check(one_of({"events", "paper"}))->capture_default_str()->group(num);
     app.add_option("--steps-per-period", n.steps_per_period, "Accuracy: RK4 steps per period of the cell's fastest time scale")
-        ->check(number_in(4, 1e5))->capture_default_str()->group(num);
+        ->check(number_in(4, 1e5, none))->capture_default_str()->group(num);
     app.add_option("--paper-dt", n.paper_dt_s, "Step of the paper's method [s]")
-        ->check(number_in(1e-7, 0.1))->capture_default_str()->group(num);
+        ->check(number_in(1e-7, 0.1, "s"))->capture_default_str()->group(num);
     app.add_option("--impact-threshold", n.impact_threshold, "Impacts slower than this fraction of p alpha are settling")
-        ->check(number_in(1e-12, 0.1))->capture_default_str()->group(num);
+        ->check(number_in(1e-12, 0.1, none))->capture_default_str()->group(num);
     app.add_option("--max-steps", n.max_steps, "Step cap per cell; beyond it the cell is 'not converged' (255)")
-        ->check(CLI::Range(std::int64_t{100}, std::int64_t{1'000'000'000}))->capture_default_str()->group(num);
+        ->check(integer_in(100, 1'000'000'000))->capture_default_str()->group(num);
     app.add_flag("--no-energy-stop", n.no_energy_stop, "Integrate every cell to rest instead of deciding by energy")->group(num);
     app.add_option("--lanes", n.lanes, "Cells advanced together in one batch")
-        ->check(CLI::IsMember({1, 4, 8, 16}))->capture_default_str()->group(num);
+        ->check(integer_of({1, 4, 8, 16}))->capture_default_str()->group(num);
 }
 
 void print_info(const Options& o, std::ostream& out) {
@@ -150,18 +135,63 @@ void print_info(const Options& o, std::ostream& out) {
     }
 }
 
+/// CLI11's message for a parse error in our words: "--x = V is invalid: ..." for a bad value,
+/// the unknown word and where it may be used otherwise; one line, values shortened.
+std::string parse_message(const CLI::App& app, const CLI::ParseError& e, const std::vector<std::string>& subcommands) {
+    const std::string what = e.what();
+    std::string list;
+    for (const std::string& s : subcommands) list += (list.empty() ? "" : ", ") + s;
+    if (dynamic_cast<const CLI::ValidationError*>(&e)) {
+        const std::size_t colon = what.find(": ");  // "--opt: VALUE is invalid: ..." from our validators
+        if (colon != std::string::npos) return what.substr(0, colon) + " = " + what.substr(colon + 2);
+    }
+    if (dynamic_cast<const CLI::ArgumentMismatch*>(&e)) {
+        // "--x: At Most 2 required but received 3", "--x: 1 required TYPE:DESC missing"
+        std::smatch m;
+        const std::string name = what.substr(0, what.find(": "));
+        if (std::regex_search(what, m, std::regex("(\\d+) required but received (\\d+)")))
+            return name + " is invalid: " + m[2].str() + " values given; allowed: " +
+                   (m[1] == "1" ? std::string("one value (give the option once)") : m[1].str() + " values");
+        if (std::regex_search(what, m, std::regex("(\\d+) required (.*) missing"))) {
+            const std::string desc = m[2].str().substr(m[2].str().find(':') + 1);
+            return name + " is invalid: a value is missing; allowed: " + (m[1] == "1" ? "one value, " : m[1].str() + " values, each ") + desc;
+        }
+    }
+    const std::string extra = "INI was not able to parse ";
+    if (what.rfind(extra, 0) == 0) {
+        const std::string key = what.substr(extra.size());
+        for (const std::string& s : subcommands)  // a command's own option outside its table
+            if (app.get_subcommand(s)->get_option_no_throw("--" + key))
+                return "config key '" + key + "' is an option of rocksweep " + s + ": put it in the config's [" + s + "] table";
+        return "config key '" + shorten(key) + "' is not an option of rocksweep (see rocksweep --help)";
+    }
+    const std::vector<const CLI::App*> chosen = app.get_subcommands([](const CLI::App* s) { return s->parsed(); });
+    std::vector<std::string> left;
+    for (const CLI::App* a : chosen) for (const std::string& r : a->remaining()) left.push_back(r);
+    for (const std::string& r : app.remaining()) left.push_back(r);
+    if (chosen.empty()) {
+        for (const std::string& r : left)
+            if (r.empty() || r[0] != '-') return "'" + shorten(r) + "' is not a command of rocksweep: one of " + list;
+        return "a command is required: one of " + list + " (rocksweep --help)";
+    }
+    const std::string sub = chosen.front()->get_name();
+    if (dynamic_cast<const CLI::ExtrasError*>(&e) && !left.empty())
+        return "'" + shorten(left.front()) + "' is not an option of rocksweep " + sub + " (see rocksweep " + sub + " --help and rocksweep --help)";
+    return shorten(what, 300);
+}
+
 }  // namespace
 
 int run_cli(int argc, char** argv, const MpiSession& mpi) {
     RootStream err(mpi);
     Options opts;
     CLI::App app{"rocksweep: overturning spectra of rocking blocks (free, anchored, adaptive anchorages)", "rocksweep"};
-    app.set_config("--config", "", "TOML config file; every key can be overridden on the command line");
+    CLI::Option* config = app.set_config("--config", "", "TOML config file; every key can be overridden on the command line");
+    config->check(existing_file("a TOML config file"));
     app.allow_config_extras(CLI::config_extras_mode::error);
     app.require_subcommand(1);
     add_model_options(app, opts);
-    bool show_version = false;
-    app.add_flag("--version", show_version, "Print the version and exit");
+    app.set_version_flag("--version", std::string("rocksweep ") + ROCKSWEEP_VERSION, "Print the version and exit");
 
     SweepCommand sweep_cmd;
     CLI::App* sweep = app.add_subcommand("sweep", "Overturning spectra over omega_p/p x a_p0/(alpha g) for every scenario");
@@ -171,13 +201,13 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
     sweep->add_flag("--overwrite", sweep_cmd.overwrite, "Replace an existing output file");
     sweep->add_flag("-q,--quiet", sweep_cmd.quiet, "No progress output");
     sweep->add_option("--chunk", sweep_cmd.max_chunk, "Largest chunk of cells handed to a rank")
-        ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 20))->capture_default_str();
+        ->check(integer_in(1, 1 << 20))->capture_default_str();
     sweep->add_option("--refine", sweep_cmd.refine_stride,
                       "Boundary refinement: compute every STRIDE-th cell, then only where outcomes differ, "
                       "halving the spacing down to the full grid (0: compute every cell)")
-        ->check(CLI::IsMember({0, 2, 4, 8, 16, 32, 64, 128}))->capture_default_str();
+        ->check(integer_of({0, 2, 4, 8, 16, 32, 64, 128}))->capture_default_str();
     sweep->add_option("--checkpoint-interval", sweep_cmd.checkpoint_s, "Seconds between saves of the finished cells")
-        ->check(number_in(0.1, 86400))->capture_default_str();
+        ->check(number_in(0.1, 86400, "s"))->capture_default_str();
 
     std::string sim_output;
     bool sim_quiet = false, sim_overwrite = false;
@@ -185,23 +215,23 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
     CLI::App* sim = app.add_subcommand("simulate", "One time history: theta, theta_dot, stiffness, works");
     sim->fallthrough();
     sim->add_option("-o,--output", sim_output, "Output file, .h5 or .csv")->required();
-    sim->add_option("--pulse", so.pulse, "sine | constant")->check(CLI::IsMember({"sine", "constant"}))->capture_default_str();
-    sim->add_option("--omega-ratio", so.omega_ratio, "omega_p / p of the sine pulse")->check(number_in(0, 1e4, true))->capture_default_str();
-    sim->add_option("--amplitude-ratio", so.amplitude_ratio, "a_p0 / (alpha g)")->check(number_in(-1e4, 1e4))->capture_default_str();
-    sim->add_option("--duration", so.duration_s, "Length of the constant pulse [s]")->check(positive());
+    sim->add_option("--pulse", so.pulse, "sine | constant")->check(one_of({"sine", "constant"}))->capture_default_str();
+    sim->add_option("--omega-ratio", so.omega_ratio, "omega_p / p of the sine pulse")->check(number_in(1e-3, 1e3, none))->capture_default_str();
+    sim->add_option("--amplitude-ratio", so.amplitude_ratio, "a_p0 / (alpha g)")->check(number_in(-1e3, 1e3, none))->capture_default_str();
+    sim->add_option("--duration", so.duration_s, "Length of the constant pulse [s]")->check(number_in(1e-4, 1e4, "s"));
     sim->add_option("--anchorage", so.anchorage, "free | constant | adaptive")
-        ->check(CLI::IsMember({"free", "constant", "adaptive"}))->capture_default_str();
+        ->check(one_of({"free", "constant", "adaptive"}))->capture_default_str();
     sim->add_option("--theta-f-ratio", so.theta_f_ratio, "Fracture angle theta_f / alpha (of K_max for adaptive)")
-        ->check(number_in(0, 14.4, true))->capture_default_str();
-    sim->add_option("--kmin-ratio", so.kmin_ratio, "Adaptive: K_min / K_max")->check(number_in(0, 1, true))->capture_default_str();
-    sim->add_option("--stiffness", so.stiffness, "Constant anchorage: K [N/m] instead of --theta-f-ratio")->check(positive());
-    sim->add_option("--t-end", so.t_end_s, "Record length [s] (default: pulse + 10 rocking periods 2 pi / p)")->check(positive());
-    sim->add_option("--output-dt", so.output_dt_s, "Output interval [s]")->check(number_in(1e-6, 100))->capture_default_str();
+        ->check(number_in(1e-3, 1e3, none))->capture_default_str();
+    sim->add_option("--kmin-ratio", so.kmin_ratio, "Adaptive: K_min / K_max")->check(number_in(1e-6, 1, none))->capture_default_str();
+    sim->add_option("--stiffness", so.stiffness, "Constant anchorage: K [N/m] instead of --theta-f-ratio")->check(number_in(1, 1e12, "N/m"));
+    sim->add_option("--t-end", so.t_end_s, "Record length [s] (default: pulse + 10 rocking periods 2 pi / p)")->check(number_in(1e-3, 1e6, "s"));
+    sim->add_option("--output-dt", so.output_dt_s, "Output interval [s]")->check(number_in(1e-6, 100, "s"))->capture_default_str();
     sim->add_option("--record", so.record, "A recorded ground motion instead of a pulse: text file, time [s] and acceleration per line")
-        ->check(CLI::ExistingFile);
+        ->check(existing_file("a ground-motion record"));
     sim->add_option("--record-units", so.record_units, "Unit of the record's acceleration column: g or m/s^2 (required with --record)")
-        ->check(CLI::IsMember({"g", "m/s^2"}));
-    sim->add_option("--record-scale", so.record_scale, "Factor applied to the record")->check(number_in(-100, 100))->capture_default_str();
+        ->check(one_of({"g", "m/s^2"}));
+    sim->add_option("--record-scale", so.record_scale, "Factor applied to the record")->check(number_in(-100, 100, none))->capture_default_str();
     sim->add_flag("-q,--quiet", sim_quiet, "Print nothing on success");
     sim->add_flag("--overwrite", sim_overwrite, "Replace an existing output file");
 
@@ -210,24 +240,22 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
     for (CLI::App* sub : {sweep, sim, info})
         sub->footer("Block, pulse, anchorage, grid and numerics options (and --config): rocksweep --help");
 
+    const std::vector<std::string> subcommands{"sweep", "simulate", "info"};
+    app.config_formatter(std::make_shared<TomlConfig>(subcommands, std::vector<std::string>{"block", "pulse", "anchorage", "grid", "numerics"},
+                                                      [config] { return config->as<std::string>(); }));
+    const std::vector<std::string> args(argv + (argc > 0 ? 1 : 0), argv + argc);
     try {
         app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& e) {
-        if (mpi.is_root()) app.exit(e);
-        return 0;
-    } catch (const CLI::CallForAllHelp& e) {
+        const CLI::App* chosen = app.get_subcommands().at(0);
+        check_combinations(app, chosen->get_name(), opts, args);
+    } catch (const CLI::Success& e) {  // --help, --help-all, --version: to stdout, once
         if (mpi.is_root()) app.exit(e);
         return 0;
     } catch (const CLI::ParseError& e) {
-        if (show_version) {
-            err << "rocksweep " << ROCKSWEEP_VERSION << "\n";
-            return 0;
-        }
-        std::string what = e.what();
-        const std::string extra = "INI was not able to parse ";
-        if (what.rfind(extra, 0) == 0)
-            what = "config key '" + what.substr(extra.size()) + "' is not an option of rocksweep (see rocksweep --help)";
-        err << "rocksweep: error: " << what << "\n";
+        err << "rocksweep: error: " << parse_message(app, e, subcommands) << "\n";
+        return 2;
+    } catch (const InputError& e) {
+        err << "rocksweep: error: " << cli_message(e) << "\n";
         return 2;
     }
     const std::string config_text = app.config_to_str(true, false);

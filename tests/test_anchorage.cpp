@@ -53,8 +53,21 @@ TEST(Anchorage, ValidationNamesTheField) {
     try {
         adaptive_anchorage(kBlock, kStrength, 0.2, 1.5);
     } catch (const InputError& e) {
-        EXPECT_EQ(e.field(), "kmin-ratio");
+        EXPECT_EQ(e.field(), "anchorage.kmin_ratio");
     }
+}
+
+TEST(Anchorage, StiffnessTooSoftToBreakBeforePiIsRejectedAsStiffness) {
+    // F_u / (4 b K) = 1e20: theta_f = 2 atan(1e20) rounds to pi, the spring could never break.
+    const double k = kStrength / (4 * kBlock.half_width_m() * 1e20);
+    try {
+        constant_anchorage_k(kBlock, kStrength, k);
+        FAIL() << "no throw";
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.field(), "anchorage.stiffness");
+    }
+    EXPECT_THROW(constant_anchorage_k(kBlock, kStrength, INFINITY), InputError);
+    EXPECT_THROW(constant_anchorage(kBlock, INFINITY, 0.1), InputError);
 }
 
 TEST(Anchorage, AdaptiveLawOnHandBuiltStates) {

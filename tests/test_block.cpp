@@ -48,10 +48,27 @@ TEST(Block, NonPositiveSizesAndNaNAreRejectedWithTheFieldName) {
         rectangular_block(-0.3, 1.36, 3361.0);
         FAIL() << "no throw";
     } catch (const InputError& e) {
-        EXPECT_EQ(e.field(), "half-width");
+        EXPECT_EQ(e.field(), "block.half_width");
         EXPECT_NE(std::string(e.what()).find("-0.3"), std::string::npos);
     }
     EXPECT_THROW(rectangular_block(0.3, NAN, 3361.0), InputError);
     EXPECT_THROW(rectangular_block(0.3, 1.36, 0.0), InputError);
     EXPECT_THROW(rectangular_block(0.3, 1.36, 3361.0, -9.81), InputError);
+}
+
+TEST(Block, NeedlesAndUnboundedInertiaAreRejected) {
+    // h / b = 1e5: alpha = 1e-5 rad, below min_alpha_rad; the error names the height.
+    try {
+        rectangular_block(1e-5, 1.0, 1.0);
+        FAIL() << "no throw";
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.field(), "block.half_height");
+    }
+    EXPECT_NO_THROW(rectangular_block(2e-4, 1.0, 1.0));  // alpha = 2e-4 rad: accepted
+    // p = 1e-200 rad/s would need I0/(m R^2) = inf: every pulse "too fast", every cell safe.
+    EXPECT_THROW(equivalent_block(1.0, 0.2, inertia_ratio_from_p(1e-200, 1.0, 9.81), 1.0), InputError);
+    EXPECT_THROW(equivalent_block(1.0, 0.2, 1.0001e4, 1.0), InputError);
+    EXPECT_NO_THROW(equivalent_block(1.0, 0.2, 1e4, 1.0));
+    EXPECT_THROW(equivalent_block(INFINITY, 0.2, 4.0 / 3.0, 1.0), InputError);
+    EXPECT_THROW(equivalent_block(1.0, 0.2, 4.0 / 3.0, INFINITY), InputError);
 }

@@ -20,11 +20,20 @@ struct Block {
     double housner_e() const;       ///< 1 - 2 sin^2(alpha) / inertia_ratio (Eq. 14)
 };
 
+/// Below this slenderness angle (h/b > 1e4, a needle) the uplift threshold and the settling
+/// speed, both proportional to alpha, approach the rounding of theta: refused, not integrated.
+inline constexpr double min_alpha_rad = 1e-4;
+/// I0/(m R^2) above this puts nearly all the mass far outside the block's outline; it also
+/// keeps p = sqrt(g / (ratio R)) away from 0, where every pulse would look infinitely fast.
+inline constexpr double max_inertia_ratio = 1e4;
+
 /// Housner's e for a block of this slenderness and mass distribution.
 double housner_e(double alpha_rad, double inertia_ratio);
 
 /// Rectangle of half-width b and half-height h. `e` defaults to Housner's value.
-/// Throws InputError if a size is not positive, e exceeds Housner's, or Housner's e <= 0.
+/// Throws InputError if a size is not positive and finite, alpha < min_alpha_rad, e exceeds
+/// Housner's, or Housner's e <= 0. Field ids are neutral ("block.half_width", "block.alpha",
+/// ...): the app layer names the option the user wrote.
 Block rectangular_block(double b_m, double h_m, double mass_kg, double gravity = 9.81,
                         std::optional<double> e = std::nullopt);
 

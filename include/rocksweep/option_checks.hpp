@@ -1,0 +1,28 @@
+#pragma once
+/// Validators for command-line and config values. Each message says which of three things is
+/// wrong — not a number, not an integer, out of range — and what is allowed; the value is
+/// shortened (errors.hpp). CLI11 prefixes the option's name; run_cli turns "--x: " into
+/// "--x = " so that every bad value reads "--x = VALUE is invalid: WHY; allowed: RANGE".
+#include <CLI/CLI.hpp>
+
+#include <string>
+#include <vector>
+
+namespace rocksweep {
+
+/// A finite number in [lo, hi]; `open_lo` / `open_hi` exclude an end. `unit` follows the range
+/// ("m", "rad/s"; may be empty). --help shows "NUMBER in (0, 1e3] m".
+CLI::Validator number_in(double lo, double hi, const std::string& unit, bool open_lo = false, bool open_hi = false);
+/// A whole number in [lo, hi], written in decimal digits.
+CLI::Validator integer_in(long long lo, long long hi);
+/// A whole number from `allowed`.
+CLI::Validator integer_of(std::vector<long long> allowed);
+/// A word from `allowed` (exact, case-sensitive).
+CLI::Validator one_of(std::vector<std::string> allowed);
+/// The name of an existing regular file: not empty, not a directory. `what` names its content.
+CLI::Validator existing_file(const std::string& what);
+
+/// 1e+12 -> "1e12", 0.001 -> "0.001", 3.14159265 -> "3.14159": how ranges are written.
+std::string format_bound(double x);
+
+}  // namespace rocksweep
