@@ -80,10 +80,12 @@ std::vector<Setting> result_settings(const SweepSpec& spec, const IntegratorSett
     auto num = [](const char* attr, const char* option, double x, std::string shown) {
         return Setting{attr, option, std::move(shown), x, false};
     };
+    // The method is compared first; of the two step settings only the method's own shapes results.
+    const bool paper = s.method == Method::paper;
     return {
         {"method", "method", to_string(s.method), 0.0, true},
-        num("steps_per_period", "steps-per-period", s.steps_per_period, format_number(s.steps_per_period)),
-        num("paper_dt_s", "paper-dt", s.paper_dt_s, format_number(s.paper_dt_s)),
+        paper ? num("paper_dt_s", "paper-dt", s.paper_dt_s, format_number(s.paper_dt_s))
+              : num("steps_per_period", "steps-per-period", s.steps_per_period, format_number(s.steps_per_period)),
         num("max_steps", "max-steps", static_cast<double>(s.max_steps), std::to_string(s.max_steps)),
         // 1: a safe block is decided by energy after the pulse; 0: --no-energy-stop.
         num("energy_stop", "no-energy-stop", s.energy_stop ? 1.0 : 0.0, s.energy_stop ? "not given" : "given"),

@@ -25,11 +25,20 @@ check() {  # check REGEX OPTIONS...: --resume with OPTIONS must be refused with 
 tail="as $out was computed with \(--resume continues a file only with the settings that shaped its results\)"
 check "^rocksweep: error: --method = paper is invalid: events, $tail" --method paper
 check "^rocksweep: error: --steps-per-period = 96 is invalid: 48, $tail" --steps-per-period 96
-check "^rocksweep: error: --paper-dt = 0.001 is invalid: 0.0025, $tail" --paper-dt 0.001
 check "^rocksweep: error: --max-steps = 5000 is invalid: 2000000, $tail" --max-steps 5000
 check "^rocksweep: error: --no-energy-stop = given is invalid: not given, $tail" --no-energy-stop
 check "^rocksweep: error: --impact-threshold = 0.002 is invalid: 0.001, $tail" --impact-threshold 0.002
 check "^rocksweep: error: --equations = linearised is invalid: nonlinear, $tail" --equations linearised
+# The paper's method: its step shapes results; --steps-per-period is then not asked for.
+paper="$dir/paper.h5"
+"$rs" sweep --config "$cfg" "${grid[@]}" --method paper -o "$paper" || fail "paper sweep"
+sum_paper=$(md5sum < "$paper")
+err=$("$rs" sweep --config "$cfg" "${grid[@]}" --method paper --paper-dt 0.001 -o "$paper" --resume 2>&1 >/dev/null); status=$?
+echo "--method paper --paper-dt 0.001 -> $err"
+[ "$status" -eq 2 ] || fail "paper-dt: exit status $status, expected 2"
+grep -Eq -- "^rocksweep: error: --paper-dt = 0.001 is invalid: 0.0025, as $paper was computed with" <<<"$err" || fail "paper-dt: message"
+[ "$(md5sum < "$paper")" = "$sum_paper" ] || fail "paper-dt: the file changed"
+n=$((n + 1))
 # Settings that do not change a bit (lanes, chunk) are free to differ.
 "$rs" sweep --config "$cfg" "${grid[@]}" --lanes 4 --chunk 3 -o "$out" --resume || fail "lanes/chunk refused"
 echo "ok: $n settings refused"
