@@ -11,6 +11,7 @@
 
 #include "rocksweep/config_file.hpp"
 #include "rocksweep/errors.hpp"
+#include "rocksweep/history.hpp"
 #include "rocksweep/option_checks.hpp"
 #include "rocksweep/option_combinations.hpp"
 
@@ -92,17 +93,33 @@ void add_model_options(CLI::App& app, Options& o) {
     const char* num = "Numerics";
     app.add_option("--method", n.method, "events (RK4, every discontinuity located) | paper (fixed dt, for comparison)")
         ->check(one_of({"events", "paper"}))->capture_default_str()->group(num);
-    app.add_option("--steps-per-period", n.steps_per_period, "Accuracy: RK4 steps per period of the cell's fastest time scale")
+    app.add_option("--steps-per-period", n.steps_per_period, "Accuracy: RK4 steps per period of the cell's fastest time scale (simulate: 384 unless given)")
         ->check(number_in(4, 1e5, none))->capture_default_str()->group(num);
     app.add_option("--paper-dt", n.paper_dt_s, "Step of the paper's method [s]")
         ->check(number_in(1e-7, 0.1, "s"))->capture_default_str()->group(num);
-    app.add_option("--impact-threshold", n.impact_threshold, "Impacts slower than this fraction of p alpha are settling")
+    app.add_option("--impact-threshold", n.impact_threshold, "Impacts slower than this fraction of p alpha are settling (simulate: 1e-4 unless given)")
         ->check(number_in(1e-12, 0.1, none))->capture_default_str()->group(num);
     app.add_option("--max-steps", n.max_steps, "Step cap per cell; beyond it the cell is 'not converged' (255)")
         ->check(integer_in(100, 1'000'000'000))->capture_default_str()->group(num);
     app.add_flag("--no-energy-stop", n.no_energy_stop, "Integrate every cell to rest instead of deciding by energy")->group(num);
     app.add_option("--lanes", n.lanes, "Cells advanced together in one batch")
         ->check(integer_of({1, 4, 8, 16}))->capture_default_str()->group(num);
+}
+
+/// A single history is cheap: unless the user chose them, `simulate` takes the accuracy that
+/// makes it a reference-grade history (kHistoryDefaults), not the sweep's. The defaults shown
+/// in the provenance follow, so that replaying it reproduces the history.
+void use_history_defaults(CLI::App& app, NumericsOptions& n) {
+    CLI::Option* spp = app.get_option("--steps-per-period");
+    if (spp->count() == 0) {
+        n.steps_per_period = kHistoryDefaults.steps_per_period;
+        spp->default_str(format_number(n.steps_per_period));
+    }
+    CLI::Option* thr = app.get_option("--impact-threshold");
+    if (thr->count() == 0) {
+        n.impact_threshold = kHistoryDefaults.impact_threshold;
+        thr->default_str(format_number(n.impact_threshold));
+    }
 }
 
 void print_info(const Options& o, std::ostream& out) {
@@ -258,6 +275,7 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
         err << "rocksweep: error: " << cli_message(e) << "\n";
         return 2;
     }
+    if (*sim) use_history_defaults(app, opts.numerics);
     const std::string config_text = app.config_to_str(true, false);
     try {
         if (*info) {

@@ -46,6 +46,8 @@ int run_simulate(const Options& o, const SimulateCommand& cmd, const std::string
                   << " p alpha; " << r.impacts_total << " in all)\nmax |theta| / alpha: " << r.max_rotation << "\n";
         if (!std::isnan(r.t_overturn_s)) std::cout << "t_overturn: " << r.t_overturn_s << " s\n";
         if (!std::isnan(r.peak_force_ratio)) std::cout << "peak force / F_u: " << r.peak_force_ratio << "\n";
+        if (m.anchorage == AnchorageKind::adaptive)  // the paper's law, physics.md §4
+            std::cout << "spring energy injected by K_min -> K_max switches: " << h.switch_energy_j << " J\n";
         std::cout << "friction needed to rock without sliding: " << r.mu_required;
         if (o.base.friction > 0.0)
             std::cout << (r.mu_required > o.base.friction ? " (more than" : " (within") << " mu_s = " << o.base.friction << ")";

@@ -88,8 +88,9 @@ void prepare_output(Start& s, const SweepSpec& spec, const IntegratorSettings& s
     const bool exists = s.claim->exists();
     if (exists && cmd.resume) {
         s.results = read_spectra_results(cmd.output, spec, settings);
-        log << "resuming " << cmd.output << ": " << s.results.done_count() << " of " << spec.cell_count()
-            << " cells already done\n";
+        if (!cmd.quiet)
+            log << "resuming " << cmd.output << ": " << s.results.done_count() << " of " << spec.cell_count()
+                << " cells already done\n";
     } else if (exists && !cmd.overwrite) {
         throw InputError("output", cmd.output, "a new file; it exists: pass --resume to continue it or --overwrite to replace it");
     }
@@ -193,7 +194,7 @@ int run_sweep(const Options& opts, const SweepCommand& cmd, const std::string& c
         return stats;
     };
 
-    if (mpi.is_root()) {
+    if (mpi.is_root() && !cmd.quiet) {
         log << "sweep: " << spec.scenarios.size() << " scenarios x " << spec.amplitude_ratio.points << " amplitudes x "
             << spec.omega_ratio.points << " frequencies = " << total << " cells on " << mpi.size() << " rank(s) -> "
             << cmd.output << "\n";
