@@ -5,14 +5,18 @@
 set -eu
 rs="$1"; cfg="$2"; dir="$3"; sig="$4"; want="$5"
 mkdir -p "$dir"
-grid=(--anchorages free constant --theta-f-ratios 1 0.25 --omega-ratio-points 120 --amplitude-ratio-points 100
-      --quiet --chunk 64)
+grid=(--anchorages free constant --theta-f-ratios 1 0.25 --omega-ratio-points 60 --amplitude-ratio-points 60
+      --steps-per-period 480 --quiet --chunk 64)
+# At 480 steps per period the sweep takes seconds on one core (at the default, ~0.3 s: it could
+# end before the signal). A stop is honoured within a second, so the test stays short.
 ref="$dir/ref.h5"; out="$dir/stopped.h5"
 rm -f "$ref" "$out"
 "$rs" sweep --config "$cfg" "${grid[@]}" -o "$ref"
 "$rs" sweep --config "$cfg" "${grid[@]}" -o "$out" 2>"$dir/stderr.txt" &
 pid=$!
-sleep 0.5
+# The handlers are in place once the output is claimed (its .lock exists); then let it compute.
+for _ in $(seq 100); do [ -e "$out.lock" ] && break; sleep 0.05; done
+sleep 0.3
 kill -"$sig" "$pid"
 set +e; wait "$pid"; status=$?; set -e
 cat "$dir/stderr.txt"
