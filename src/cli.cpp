@@ -244,10 +244,20 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
     sim->add_option("--stiffness", so.stiffness, "Constant anchorage: K [N/m] instead of --theta-f-ratio")->check(number_in(1, 1e12, "N/m"));
     sim->add_option("--t-end", so.t_end_s, "Record length [s] (default: pulse + 10 rocking periods 2 pi / p)")->check(number_in(1e-3, 1e6, "s"));
     sim->add_option("--output-dt", so.output_dt_s, "Output interval [s]")->check(number_in(1e-6, 100, "s"))->capture_default_str();
-    sim->add_option("--record", so.record, "A recorded ground motion instead of a pulse: text file, time [s] and acceleration per line")
+    sim->add_option("--record", so.record, "A recorded ground motion instead of a pulse: a PEER .AT2 file, or text "
+                                           "(docs/records.md)")
         ->check(existing_file("a ground-motion record"));
-    sim->add_option("--record-units", so.record_units, "Unit of the record's acceleration column: g or m/s^2 (required with --record)")
-        ->check(one_of({"g", "m/s^2"}));
+    sim->add_option("--record-format", so.record_format,
+                    "auto (at2 for a .AT2 file, else time_accel) | time_accel (time [s], acceleration columns) | "
+                    "accel_only (acceleration only, with --record-dt) | at2 (PEER NGA)")
+        ->check(one_of({"auto", "time_accel", "accel_only", "at2"}))->capture_default_str();
+    sim->add_option("--record-units", so.record_units,
+                    "Unit of the record's acceleration: g, m/s^2 or cm/s^2 (required except for .AT2, whose header states it)")
+        ->check(one_of({"g", "m/s^2", "cm/s^2"}));
+    sim->add_option("--record-dt", so.record_dt_s, "Sampling interval of an accel_only record [s]")->check(number_in(1e-5, 1, "s"));
+    sim->add_option("--record-column", so.record_column,
+                    "Column of the acceleration, counting the time column (default: 2 for time_accel, 1 for accel_only)")
+        ->check(integer_in(1, 1000));
     sim->add_option("--record-scale", so.record_scale, "Factor applied to the record")->check(number_in(-100, 100, none))->capture_default_str();
     sim->add_flag("-q,--quiet", sim_quiet, "Print nothing on success");
     sim->add_flag("--overwrite", sim_overwrite, "Replace an existing output file");

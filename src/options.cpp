@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <map>
 
 #include "rocksweep/errors.hpp"
@@ -217,15 +218,27 @@ SweepSpec make_sweep_spec(const Options& o) {
     return spec;
 }
 
+RecordSource record_source(const SingleOptions& s) {
+    RecordSource r;
+    r.path = s.record;
+    const std::string ext = std::filesystem::path(s.record).extension().string();
+    const bool at2_name = ext == ".AT2" || ext == ".at2";
+    r.format = s.record_format == "auto" ? (at2_name ? RecordFormat::at2 : RecordFormat::time_accel)
+                                         : parse_record_format("record-format", s.record_format);
+    r.units = s.record_units;
+    r.dt_s = s.record_dt_s;
+    r.column = s.record_column;
+    r.scale = s.record_scale;
+    return r;
+}
+
 CellModel make_single_cell(const Options& o) {
     const Block b = make_block(o.block);
     const SingleOptions& s = o.single;
     Pulse pulse;
     pulse.ax_g = s.amplitude_ratio * b.alpha_rad;
     if (!s.record.empty()) {
-        if (s.record_units.empty())
-            throw InputError("record-units", "(missing)", "the unit of the record's second column, g or m/s^2");
-        pulse = read_record(s.record, s.record_units, s.record_scale, b.gravity);
+        pulse = to_pulse(read_record(record_source(s)), b.gravity);
     } else if (s.pulse == "sine") {
         pulse.kind = PulseKind::sine;
         pulse.omega = s.omega_ratio * b.p();

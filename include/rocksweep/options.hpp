@@ -6,6 +6,7 @@
 
 #include "rocksweep/integrator.hpp"
 #include "rocksweep/model.hpp"
+#include "rocksweep/record.hpp"
 #include "rocksweep/sweep.hpp"
 
 namespace rocksweep {
@@ -56,6 +57,9 @@ struct SingleOptions {
     double t_end_s = 0.0, output_dt_s = 0.01;
     std::string record, record_units;  ///< a recorded ground motion instead of a pulse
     double record_scale = 1.0;
+    std::string record_format = "auto";  ///< auto: at2 for a .AT2 file, else time_accel
+    double record_dt_s = 0.0;            ///< accel_only: the sampling interval [s]
+    int record_column = 0;               ///< 1-based, the time column counted; 0: the format's default
 };
 
 struct Options {
@@ -73,6 +77,8 @@ Block make_block(const BlockOptions& o);
 Equations parse_equations(const std::string& s);
 IntegratorSettings make_settings(const NumericsOptions& o);
 SweepSpec make_sweep_spec(const Options& o);
+/// How `simulate --record ...` asks for its record to be read (record.hpp).
+RecordSource record_source(const SingleOptions& s);
 /// The single cell of `rocksweep simulate`.
 CellModel make_single_cell(const Options& o);
 /// Default record length of a history: the pulse and ten rocking periods 2 pi / p after it.
