@@ -45,7 +45,7 @@ lock)
   slow=(--anchorages free --omega-ratio-points 2 --amplitude-ratio-points 2 --steps-per-period 100000
         --no-energy-stop --quiet)
   "$rs" sweep --config "$cfg" "${slow[@]}" -o "$out" 2>"$dir/first.txt" & pid=$!
-  for _ in $(seq 1 300); do grep -q "^sweep:" "$dir/first.txt" && break; sleep 0.02; done  # claimed
+  for _ in $(seq 1 300); do [ -e "$out.lock" ] && break; sleep 0.02; done  # claimed
   expect 2 "^rocksweep: error: --output = $out is invalid: an output no other run is writing \(another rocksweep holds $out.lock\)" \
     "$rs" sweep --config "$cfg" "${slow[@]}" -o "$out" --overwrite
   kill -0 "$pid" 2>/dev/null || fail "the first sweep ended before the second was refused: too fast a test"
@@ -55,7 +55,7 @@ lock)
   # A SIGKILLed run leaves its lock file, but no lock: --resume goes ahead at once.
   rm -f "$out"
   "$rs" sweep --config "$cfg" "${slow[@]}" --checkpoint-interval 0.1 -o "$out" 2>"$dir/killed.txt" & pid=$!
-  for _ in $(seq 1 300); do grep -q "^sweep:" "$dir/killed.txt" && break; sleep 0.02; done
+  for _ in $(seq 1 300); do [ -e "$out.lock" ] && break; sleep 0.02; done
   kill -KILL "$pid"; wait "$pid" 2>/dev/null
   [ -e "$out.lock" ] || fail "expected the killed run's lock file to stay"
   "$rs" sweep --config "$cfg" "${slow[@]}" -o "$out" --resume || fail "--resume after SIGKILL refused"

@@ -24,8 +24,8 @@ fi
 ref="$dir/ref.h5"; out="$dir/out.h5"
 "$rs" sweep --config "$cfg" "${slow[@]}" -o "$ref" || fail "reference run"
 "${run[@]}" sweep --config "$cfg" "${slow[@]}" -o "$out" 2>"$dir/stderr.txt" & pid=$!
-# Once the sweep has announced itself (MPI is up, the output claimed), let it get into its cells.
-for _ in $(seq 1 300); do grep -q "^sweep:" "$dir/stderr.txt" && break; sleep 0.02; done
+# Once the output is claimed (MPI is up, its .lock exists), let it get into its cells.
+for _ in $(seq 1 300); do [ -e "$out.lock" ] && break; sleep 0.02; done
 sleep 0.4
 t0=$(date +%s%N)
 if [ "$np" -gt 1 ] && [ "$target" = self ]; then pkill -TERM -P "$pid"; else kill -TERM "$pid"; fi
