@@ -1,6 +1,7 @@
 #include "rocksweep/spectra_file.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <cmath>
 #include <cstdint>
 #include <set>
@@ -403,8 +404,24 @@ void write_spectra(const std::string& path, const SweepSpec& spec, const SweepRe
 
 SweepResults read_spectra_results(const std::string& path, const SweepSpec& spec,
                                   const IntegratorSettings& settings) {
+    // What the file is, in the user's words, before any HDF5 detail.
+    auto not_spectra = [&](const std::string& what) {
+        return InputError("output", path, "a rocksweep spectra file to resume; it is " + what);
+    };
+    std::optional<h5::File> opened;
     try {
-        const h5::File f = h5::File::open_read_only(path);
+        opened.emplace(h5::File::open_read_only(path));
+    } catch (const Hdf5Error&) {
+        throw not_spectra("not an HDF5 file");
+    }
+    const h5::File& f = *opened;
+    if (f.exists("theta") && f.exists("t")) throw not_spectra("a history written by rocksweep simulate");
+    if (!f.has_attribute("format_version") || !f.exists("spectra"))
+        throw not_spectra("an HDF5 file that rocksweep sweep did not write");
+    if (h5::read_int64_attribute(f, "format_version") != format_version)
+        throw not_spectra("of format version " + std::to_string(h5::read_int64_attribute(f, "format_version")) +
+                          "; this rocksweep reads " + std::to_string(format_version));
+    try {
         return read_contents(path, f, spec, settings);
     } catch (const Hdf5Error& e) {
         // A missing attribute or dataset means this is not a file we wrote for this layout.
