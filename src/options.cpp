@@ -36,9 +36,9 @@ auto naming_options(const OptionNames& names, Build&& build) -> decltype(build()
     }
 }
 
-/// A history's eight columns (t, theta, theta_dot, two stiffnesses, ground acceleration, two
-/// works: history.hpp), all double, are held until the file is written.
-constexpr double history_bytes_per_sample = 8 * sizeof(double);
+/// A history's nine columns (t, theta, theta_dot, two stiffnesses, ground acceleration, two
+/// works, switch energy: history.hpp), all double, are held until the file is written.
+constexpr double history_bytes_per_sample = 9 * sizeof(double);
 
 bool is_equivalent(const BlockOptions& o) { return o.radius_m > 0.0 || o.alpha_rad > 0.0; }
 

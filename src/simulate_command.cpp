@@ -38,7 +38,8 @@ int run_simulate(const Options& o, const SimulateCommand& cmd, const std::string
                          {{"omega_ratio", o.single.omega_ratio}, {"amplitude_ratio", o.single.amplitude_ratio},
                           {"theta_f_ratio", o.single.theta_f_ratio}, {"kmin_ratio", o.single.kmin_ratio},
                           {"p_rad_s", m.p()}, {"alpha_rad", m.alpha}, {"e", m.e},
-                          {"steps_per_period", settings.steps_per_period}, {"output_dt_s", o.single.output_dt_s}});
+                          {"steps_per_period", settings.steps_per_period}, {"impact_threshold", o.numerics.impact_threshold},
+                          {"output_dt_s", o.single.output_dt_s}});
     }
     if (!quiet) {
         const CellResult& r = h.result;
