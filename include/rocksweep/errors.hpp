@@ -28,7 +28,8 @@ std::string cli_message(const InputError& e);
 
 /// `text` cut to `max_chars` characters followed by "…" if longer (never inside a UTF-8
 /// sequence); control characters are shown as `\xNN` so that a message stays on one line.
-std::string shorten(const std::string& text, std::size_t max_chars = 60);
+/// 160 keeps a deep path whole and still cuts a pasted blob.
+std::string shorten(const std::string& text, std::size_t max_chars = 160);
 
 /// Throws InputError unless lo < x < hi (open bounds) — NaN is always rejected.
 void require_open(const std::string& field, double x, double lo, double hi, const std::string& allowed);
