@@ -20,12 +20,12 @@ mpirun "${mpi_flags[@]}" "$rs" sweep --config "$cfg" -o "$res/smatteo.h5" --over
 # One time history per anchorage at the paper's sample case, w_p/p = 4, a_p0/(alpha g) = 2.7.
 for a in free constant adaptive; do
   "$rs" simulate --config "$cfg" --anchorage "$a" --kmin-ratio 0.5 --omega-ratio 4 --amplitude-ratio 2.7 \
-    -q -o "$res/sample_$a.h5"
+    -q --overwrite -o "$res/sample_$a.h5"
 done
 # Housner's pair: 1.3 alpha g held just longer and just shorter than t* = 0.63796 s.
 for d in 0.6380 0.6300; do
   "$rs" simulate --config "$cfg" --pulse constant --amplitude-ratio 1.3 --duration "$d" \
-    --equations linearised --t-end 6 -q -o "$res/housner_$d.h5"
+    --equations linearised --t-end 6 -q --overwrite -o "$res/housner_$d.h5"
 done
 
 s="$here/scripts"
