@@ -22,33 +22,16 @@
 #include "rocksweep/errors.hpp"
 #include "rocksweep/hdf5.hpp"
 #include "rocksweep/history_file.hpp"
-#include "rocksweep/output_claim.hpp"
 #include "rocksweep/spectra_file.hpp"
+#include "test_support.hpp"
 
 namespace fs = std::filesystem;
 using namespace rocksweep;
+using rocksweep::testing::bits;
+using rocksweep::testing::TempDir;
 
 namespace {
 
-/// A fresh directory per test, removed afterwards.
-class TempDir {
-public:
-    TempDir() {
-        std::string tmpl = (fs::temp_directory_path() / "rocksweep_h5_XXXXXX").string();
-        if (!mkdtemp(tmpl.data())) throw std::runtime_error("mkdtemp failed");
-        path_ = tmpl;
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::permissions(path_, fs::perms::owner_all, fs::perm_options::add, ec);
-        fs::remove_all(path_, ec);
-    }
-    std::string file(const std::string& name) const { return (path_ / name).string(); }
-    const fs::path& path() const { return path_; }
-
-private:
-    fs::path path_;
-};
 
 SweepSpec small_spec() {
     SweepSpec spec;
@@ -95,13 +78,6 @@ Provenance some_provenance() {
     return p;
 }
 
-/// Bitwise equality of double columns, so NaN == NaN and -0.0 != 0.0.
-std::vector<std::uint64_t> bits(const std::vector<double>& v) {
-    std::vector<std::uint64_t> b;
-    for (double x : v) b.push_back(std::bit_cast<std::uint64_t>(x));
-    return b;
-}
-
 void expect_same_results(const SweepResults& a, const SweepResults& b) {
     EXPECT_EQ(a.outcome, b.outcome);
     EXPECT_EQ(bits(a.max_rotation), bits(b.max_rotation));
@@ -113,29 +89,6 @@ void expect_same_results(const SweepResults& a, const SweepResults& b) {
     EXPECT_EQ(bits(a.mu_required), bits(b.mu_required));
     EXPECT_EQ(a.pivot_uplift, b.pivot_uplift);
     EXPECT_EQ(a.done, b.done);
-}
-
-History known_history(std::size_t n) {
-    History h;
-    for (std::size_t i = 0; i < n; ++i) {
-        const double t = 0.01 * static_cast<double>(i);
-        h.t.push_back(t);
-        h.theta.push_back(0.1 * std::sin(7.0 * t) / 3.0);
-        h.theta_dot.push_back(0.7 * std::cos(7.0 * t) / 3.0);
-        h.k_left.push_back(i < n / 2 ? 1.2345678901234567e6 : 0.0);
-        h.k_right.push_back(9.87654321e5);
-        h.ground_acc.push_back(-2.5 * std::sin(3.0 * t));
-        h.w_excitation.push_back(1e-3 * t * t);
-        h.w_anchorage.push_back(i == 3 ? NAN : -1e-4 * t);
-    }
-    h.result.outcome = Outcome::overturned_impact;
-    h.result.impacts = 2;
-    h.result.impacts_total = 5;
-    h.result.t_overturn_s = 3.25;
-    h.result.max_rotation = 7.0;
-    h.result.peak_force_ratio = 0.875;
-    h.result.broken = broken_left;
-    return h;
 }
 
 }  // namespace
@@ -478,169 +431,4 @@ TEST(Hdf5, CloseRefusesWhileObjectsAreOpen) {
     // The destructor closed the file once the group was gone: nothing is left open in this
     // process (run as one binary, this also covers the tests before it).
     EXPECT_EQ(H5Fget_obj_count(H5F_OBJ_ALL, H5F_OBJ_ALL), 0);
-}
-
-// ---------------------------------------------------------------------------------------
-// History files
-
-TEST(HistoryFile, H5RoundTrip) {
-    TempDir dir;
-    const History h = known_history(50);
-    const std::string path = dir.file("history.h5");
-    write_history_h5(path, h, {{"scenario", "constant_alpha"}}, {{"omega_ratio", 2.5}});
-    EXPECT_FALSE(fs::exists(path + ".tmp"));
-
-    const h5::File f = h5::File::open_read_only(path);
-    EXPECT_EQ(bits(h5::read_1d<double>(f, "t")), bits(h.t));
-    EXPECT_EQ(bits(h5::read_1d<double>(f, "theta")), bits(h.theta));
-    EXPECT_EQ(bits(h5::read_1d<double>(f, "theta_dot")), bits(h.theta_dot));
-    EXPECT_EQ(bits(h5::read_1d<double>(f, "k_left")), bits(h.k_left));
-    EXPECT_EQ(bits(h5::read_1d<double>(f, "k_right")), bits(h.k_right));
-    EXPECT_EQ(bits(h5::read_1d<double>(f, "ground_acc")), bits(h.ground_acc));
-    EXPECT_EQ(bits(h5::read_1d<double>(f, "w_excitation")), bits(h.w_excitation));
-    EXPECT_EQ(bits(h5::read_1d<double>(f, "w_anchorage")), bits(h.w_anchorage));
-    {
-        const h5::Dataset t = f.open_dataset("t");
-        const h5::Dataset theta = f.open_dataset("theta");
-        EXPECT_TRUE(h5::is_attached(theta, t, 0));
-        EXPECT_TRUE(h5::is_attached(f.open_dataset("w_anchorage"), t, 0));
-        EXPECT_EQ(h5::read_string_attribute(t, "units"), "s");
-        EXPECT_EQ(h5::read_string_attribute(theta, "units"), "rad");
-        EXPECT_EQ(h5::read_string_attribute(f.open_dataset("theta_dot"), "units"), "rad/s");
-        EXPECT_EQ(h5::read_string_attribute(f.open_dataset("k_right"), "units"), "N/m");
-        EXPECT_EQ(h5::read_string_attribute(f.open_dataset("ground_acc"), "units"), "m/s^2");
-        EXPECT_EQ(h5::read_string_attribute(f.open_dataset("w_excitation"), "units"), "J");
-    }
-    EXPECT_EQ(h5::read_string_attribute(f, "outcome"), to_string(Outcome::overturned_impact));
-    EXPECT_EQ(h5::read_int64_attribute(f, "outcome_code"), 1);
-    EXPECT_EQ(h5::read_int64_attribute(f, "impacts"), 2);
-    EXPECT_EQ(h5::read_int64_attribute(f, "impacts_total"), 5);
-    EXPECT_EQ(h5::read_double_attribute(f, "t_overturn"), 3.25);
-    EXPECT_EQ(h5::read_double_attribute(f, "max_rotation"), 7.0);
-    EXPECT_EQ(h5::read_double_attribute(f, "peak_force_ratio"), 0.875);
-    EXPECT_NE(h5::read_string_attribute(f, "work_sign_convention").find("negative"), std::string::npos);
-    EXPECT_EQ(h5::read_string_attribute(f, "scenario"), "constant_alpha");
-    EXPECT_EQ(h5::read_double_attribute(f, "omega_ratio"), 2.5);
-}
-
-TEST(HistoryFile, H5RejectsRaggedColumns) {
-    TempDir dir;
-    History h = known_history(10);
-    h.k_left.pop_back();
-    EXPECT_THROW(write_history_h5(dir.file("h.h5"), h, {}, {}), std::invalid_argument);
-    EXPECT_FALSE(fs::exists(dir.file("h.h5")));
-}
-
-TEST(HistoryFile, CsvRoundTripAtFullPrecision) {
-    TempDir dir;
-    const History h = known_history(20);
-    const std::string path = dir.file("history.csv");
-    write_history_csv(path, h);
-    EXPECT_FALSE(fs::exists(path + ".tmp"));
-
-    std::ifstream in(path);
-    std::string header;
-    std::getline(in, header);
-    EXPECT_EQ(header,
-              "t_s,theta_rad,theta_dot_rad_s,k_left_N_m,k_right_N_m,ground_acc_m_s2,"
-              "w_excitation_J,w_anchorage_J");
-    const std::vector<const std::vector<double>*> cols = {
-        &h.t, &h.theta, &h.theta_dot, &h.k_left, &h.k_right, &h.ground_acc, &h.w_excitation,
-        &h.w_anchorage};
-    std::string line;
-    std::size_t row = 0;
-    while (std::getline(in, line)) {
-        ASSERT_LT(row, h.t.size());
-        std::stringstream ss(line);
-        std::string cell;
-        for (std::size_t c = 0; c < cols.size(); ++c) {
-            ASSERT_TRUE(std::getline(ss, cell, ',')) << "row " << row;
-            const double x = std::strtod(cell.c_str(), nullptr);
-            EXPECT_EQ(std::bit_cast<std::uint64_t>(x), std::bit_cast<std::uint64_t>((*cols[c])[row]))
-                << "row " << row << " column " << c << ": " << cell;
-        }
-        EXPECT_FALSE(std::getline(ss, cell, ',')) << "extra column in row " << row;
-        ++row;
-    }
-    EXPECT_EQ(row, h.t.size());
-}
-
-TEST(HistoryFile, CsvInMissingDirectoryThrows) {
-    TempDir dir;
-    const std::string path = dir.file("nope/history.csv");
-    EXPECT_THROW(write_history_csv(path, known_history(3)), InputError);
-    EXPECT_FALSE(fs::exists(path));
-    EXPECT_FALSE(fs::exists(path + ".tmp"));
-}
-
-// ---------------------------------------------------------------------------------------
-// Failed saves and the claimed output
-
-TEST(Publish, FullDiskIsOneLineAndKeepsThePreviousFile) {
-    TempDir dir;
-    const std::string path = dir.file("out.h5");
-    { std::ofstream(path) << "previous save"; }
-    const auto disk_full = [](const std::string& tmp) {
-        { std::ofstream(tmp) << "half"; }
-        throw std::system_error(ENOSPC, std::generic_category(), "writing " + tmp);
-    };
-    try {
-        h5::publish_atomically(path, disk_full);
-        ADD_FAILURE() << "expected std::runtime_error";
-    } catch (const std::runtime_error& e) {
-        EXPECT_EQ(std::string(e.what()),
-                  "cannot write " + path + ": no space left on device (" + path + " still holds the previous save)");
-    }
-    EXPECT_FALSE(fs::exists(path + ".tmp"));
-    std::ifstream in(path);
-    std::string kept;
-    std::getline(in, kept);
-    EXPECT_EQ(kept, "previous save");
-
-    // An HDF5 failure carries errno the same way; without a previous file there is no note.
-    const std::string fresh = dir.file("fresh.h5");
-    try {
-        h5::publish_atomically(fresh, [](const std::string&) { throw Hdf5Error("writing dataset 'x': ...", EDQUOT); });
-        ADD_FAILURE() << "expected std::runtime_error";
-    } catch (const std::runtime_error& e) {
-        EXPECT_EQ(std::string(e.what()), "cannot write " + fresh + ": no space left on device");
-    }
-    EXPECT_FALSE(fs::exists(fresh));
-}
-
-TEST(OutputClaim, SecondClaimOfTheSameOutputFailsUntilTheFirstEnds) {
-    TempDir dir;
-    const std::string path = dir.file("out.h5");
-    {
-        const OutputClaim first("output", path);
-        EXPECT_TRUE(fs::exists(path + ".lock"));
-        EXPECT_FALSE(fs::exists(path + ".tmp")) << "the creation proof leaves no file";
-        try {
-            const OutputClaim second("output", path);
-            ADD_FAILURE() << "expected InputError";
-        } catch (const InputError& e) {
-            EXPECT_NE(std::string(e.what()).find("another rocksweep holds " + path + ".lock"), std::string::npos)
-                << e.what();
-        }
-        { std::ofstream(path + ".tmp") << "partial"; }  // a save cut short
-    }
-    EXPECT_FALSE(fs::exists(path + ".tmp")) << "the claim removes its partial save";
-    EXPECT_FALSE(fs::exists(path + ".lock"));
-    EXPECT_NO_THROW(OutputClaim("output", path));
-}
-
-TEST(OutputClaim, RefusesWhatCannotBeWrittenAndTouchesNothing) {
-    TempDir dir;
-    const std::string path = dir.file("out.h5");
-    fs::create_directory(path + ".tmp");
-    EXPECT_THROW(OutputClaim("output", path), InputError);
-    EXPECT_TRUE(fs::is_directory(path + ".tmp")) << "never deleted";
-    EXPECT_FALSE(fs::exists(path + ".lock"));
-
-    EXPECT_THROW(OutputClaim("output", dir.file(std::string(251, 'n') + ".h5")), InputError);  // NAME.lock > 255
-    EXPECT_NO_THROW(OutputClaim("output", dir.file(std::string(250, 'n'))));                    // exactly fits
-    EXPECT_THROW(OutputClaim("output", dir.file("missing/out.h5")), InputError);
-    EXPECT_THROW(OutputClaim("output", dir.path().string()), InputError);  // a directory
-    EXPECT_THROW(OutputClaim("output", "/proc/out.h5"), InputError);
-    EXPECT_THROW(OutputClaim("output", ""), InputError);
 }
