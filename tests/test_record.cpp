@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "record_test_files.hpp"
+#include "test_support.hpp"
 #include "rocksweep/anchorage.hpp"
 #include "rocksweep/errors.hpp"
 #include "rocksweep/history.hpp"
@@ -17,7 +17,7 @@
 #include "rocksweep/record.hpp"
 
 using namespace rocksweep;
-using rocksweep::test_files::write_file;
+using rocksweep::testing::write_file;
 
 namespace {
 

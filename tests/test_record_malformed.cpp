@@ -6,12 +6,12 @@
 #include <algorithm>
 #include <string>
 
-#include "record_test_files.hpp"
+#include "test_support.hpp"
 #include "rocksweep/errors.hpp"
 #include "rocksweep/record.hpp"
 
 using namespace rocksweep;
-using rocksweep::test_files::write_file;
+using rocksweep::testing::write_file;
 
 namespace {
 
@@ -24,12 +24,7 @@ RecordSource time_accel(const std::string& path, const std::string& units = "g")
 
 // The message the command line would print, or "accepted".
 std::string message(const RecordSource& s) {
-    try {
-        read_record(s);
-    } catch (const InputError& e) {
-        return cli_message(e);
-    }
-    return "accepted";
+    return rocksweep::testing::message_of([&] { read_record(s); });
 }
 
 const std::string kTimes = " (times must increase evenly)";
@@ -85,7 +80,7 @@ TEST(RecordMalformed, EmptyOrSingleSampleFilesAndUnreadablePaths) {
     EXPECT_EQ(message(time_accel(e)), "--record = " + e + " is invalid: at least two samples (found 0)");
     const std::string one = write_file("one.dat", "# header only\n0 0.1\n");
     EXPECT_EQ(message(time_accel(one)), "--record = " + one + " is invalid: at least two samples (found 1)");
-    const std::string none = rocksweep::test_files::temp_dir() + "no_such_record.dat";
+    const std::string none = rocksweep::testing::temp_dir() + "no_such_record.dat";
     EXPECT_EQ(message(time_accel(none)), "--record = " + none + " is invalid: a readable record file (it cannot be opened)");
 }
 

@@ -5,27 +5,22 @@
 #include <filesystem>
 #include <string>
 
-#include "record_test_files.hpp"
+#include "test_support.hpp"
 #include "rocksweep/errors.hpp"
 #include "rocksweep/record_suite.hpp"
 
 using namespace rocksweep;
-using rocksweep::test_files::write_file;
+using rocksweep::testing::write_file;
 
 namespace {
 
-const std::string kDir = rocksweep::test_files::temp_dir();
+const std::string kDir = rocksweep::testing::temp_dir();
 
 // The message the command line would print, or "accepted".
 std::string message(const std::string& suite_text) {
     write_file("quake.dat", "0 0\n0.01 0.1\n0.02 0\n");
     const std::string path = write_file("suite.csv", suite_text);
-    try {
-        read_record_suite(path);
-    } catch (const InputError& e) {
-        return cli_message(e);
-    }
-    return "accepted";
+    return rocksweep::testing::message_of([&] { read_record_suite(path); });
 }
 
 const std::string kHeader = "name,file,format,units,dt\n";
