@@ -30,15 +30,18 @@ sleep 0.4
 t0=$(date +%s%N)
 if [ "$np" -gt 1 ] && [ "$target" = self ]; then pkill -TERM -P "$pid"; else kill -TERM "$pid"; fi
 # The time until the computing processes are gone: the process itself, or mpirun's children.
-while { [ "$np" -eq 1 ] && kill -0 "$pid" 2>/dev/null; } || { [ "$np" -gt 1 ] && pgrep -P "$pid" >/dev/null; }; do
+# A rank that has exited stays a zombie until mpirun's event loop reaps it, 0-2 s later: that
+# is mpirun's latency, not ours, so zombies count as gone.
+ranks_running() { ps -o stat= --ppid "$pid" 2>/dev/null | grep -qv '^Z'; }
+while { [ "$np" -eq 1 ] && kill -0 "$pid" 2>/dev/null; } || { [ "$np" -gt 1 ] && ranks_running; }; do
   sleep 0.02
 done
 ms=$(( ($(date +%s%N) - t0) / 1000000 ))
 wait "$pid"; status=$?
 cat "$dir/stderr.txt"; echo "exit status $status, computing processes gone after $ms ms"
-# Measured alone: 0.08-0.25 s (self), ~2.05 s (mpirun: its own 1 s delay, then the ranks').
+# Measured alone: 0.07-0.11 s (self), ~2.03 s (mpirun: its own 1 s delay, then the ranks').
 want=143; limit=1500
-[ "$target" = mpirun ] && { want=1; limit=3000; }
+[ "$target" = mpirun ] && { want=1; limit=5000; }  # mpirun's own 2 s, with room for a loaded machine
 [ "$status" -eq "$want" ] || fail "exit status $status, expected $want"
 [ "$ms" -le "$limit" ] || fail "took $ms ms to stop, allowed $limit"
 if [ "$target" = self ]; then grep -q "rerun with --resume" "$dir/stderr.txt" || fail "rank 0 did not report"; fi
