@@ -225,6 +225,17 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
         ->check(integer_of({0, 2, 4, 8, 16, 32, 64, 128}))->capture_default_str();
     sweep->add_option("--checkpoint-interval", sweep_cmd.checkpoint_s, "Seconds between saves of the finished cells")
         ->check(number_in(0.1, 86400, "s"))->capture_default_str();
+    sweep->add_option("--part", sweep_cmd.part,
+                      "Compute only part K of N of the cells (K/N, a job array's task); join the parts with rocksweep merge");
+
+    MergeCommand merge_cmd;
+    CLI::App* merge = app.add_subcommand("merge", "Join the part files of one sweep (sweep --part K/N) into one file");
+    merge->fallthrough();
+    merge->add_option("parts", merge_cmd.parts, "Part files of the sweep that the config and options describe")
+        ->required()->check(existing_file("a part file"));
+    merge->add_option("-o,--output", merge_cmd.output, "Output HDF5 file")->required();
+    merge->add_flag("--overwrite", merge_cmd.overwrite, "Replace an existing output file");
+    merge->add_flag("-q,--quiet", merge_cmd.quiet, "Print nothing on success");
 
     std::string sim_output;
     bool sim_quiet = false, sim_overwrite = false;
@@ -264,10 +275,10 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
 
     CLI::App* info = app.add_subcommand("info", "Derived values: alpha, p, e, R, I0, K and F_u per scenario");
     info->fallthrough();
-    for (CLI::App* sub : {sweep, sim, info})
+    for (CLI::App* sub : {sweep, merge, sim, info})
         sub->footer("Block, pulse, anchorage, grid and numerics options (and --config): rocksweep --help");
 
-    const std::vector<std::string> subcommands{"sweep", "simulate", "info"};
+    const std::vector<std::string> subcommands{"sweep", "merge", "simulate", "info"};
     app.config_formatter(std::make_shared<TomlConfig>(subcommands, std::vector<std::string>{"block", "pulse", "anchorage", "grid", "numerics"},
                                                       [config] { return config->as<std::string>(); }));
     const std::vector<std::string> args(argv + (argc > 0 ? 1 : 0), argv + argc);
@@ -295,6 +306,10 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
         if (*sim) {
             if (!mpi.is_root()) return 0;  // one history: one rank is enough
             return run_simulate(opts, SimulateCommand{sim_output, sim_quiet, sim_overwrite}, config_text);
+        }
+        if (*merge) {
+            if (!mpi.is_root()) return 0;  // reading and writing files: one rank
+            return run_merge(opts, merge_cmd, config_text);
         }
         return run_sweep(opts, sweep_cmd, config_text, mpi);
     } catch (const InputError& e) {
