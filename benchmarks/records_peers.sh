@@ -19,9 +19,16 @@ build/benchmarks/records_peers histories --out "$out"
 # table takes each round's ratios. The scipy peer rewrites its histories every round (same values).
 timing="$out/records_peers_timing.csv"
 echo "round,label,runs,passes,wall_s,cpu_s" >"$timing"
+loads=""
 for ((r = 1; r <= rounds; r++)); do
+  loads+=" $(cut -d' ' -f1 /proc/loadavg)"
   echo "[records_peers.sh] round $r of $rounds, load $(cut -d' ' -f1-3 /proc/loadavg)" >&2
   "$py" benchmarks/records_peers.py --out "$out" | sed "s/^/$r,/" >>"$timing"
   build/benchmarks/records_peers time --min-seconds 1 | sed "s/^/$r,/" >>"$timing"
 done
-"$py" benchmarks/records_peers_table.py "$out" | tee "$out/records_peers.txt"
+{
+  echo "benchmarks/records_peers.sh $rounds, $(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores ($(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)),"
+  echo "load average at the start of each round:$loads; rocksweep $(git rev-parse --short HEAD 2>/dev/null || echo '?')"
+  echo
+  "$py" benchmarks/records_peers_table.py "$out"
+} | tee "$out/records_peers.txt"
