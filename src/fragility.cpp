@@ -275,6 +275,19 @@ bool reaches(const IdaPoint& run, const DamageState& state) {
     return run.overturned || (!state.overturning && run.max_rotation >= state.rotation_ratio);
 }
 
+std::vector<Stripe> stripes_from_runs(std::span<const IdaPoint> runs, const DamageState& state) {
+    std::vector<IdaPoint> sorted(runs.begin(), runs.end());
+    for (const IdaPoint& p : sorted) check_intensity(p.intensity, "stripes_from_runs");
+    std::sort(sorted.begin(), sorted.end(), [](const IdaPoint& a, const IdaPoint& b) { return a.intensity < b.intensity; });
+    std::vector<Stripe> stripes;
+    for (const IdaPoint& p : sorted) {
+        if (stripes.empty() || stripes.back().intensity != p.intensity) stripes.push_back({p.intensity, 0, 0});
+        ++stripes.back().total;
+        stripes.back().exceed += reaches(p, state) ? 1 : 0;
+    }
+    return stripes;
+}
+
 IdaCapacity ida_capacity(std::span<const IdaPoint> curve, const DamageState& state) {
     if (curve.empty()) throw std::invalid_argument("ida_capacity: empty curve");
     for (std::size_t k = 0; k < curve.size(); ++k) {

@@ -301,3 +301,20 @@ TEST(FragilityIda, CapacitiesFromOneRecord) {
     EXPECT_THROW(ida_capacity(unsorted, {0.1, false}), std::invalid_argument);
     EXPECT_THROW(ida_capacity(std::vector<IdaPoint>{}, {0.1, false}), std::invalid_argument);
 }
+
+TEST(FragilityStripes, CountedFromRunsPerIntensity) {
+    const std::vector<IdaPoint> runs = {
+        {1.0, 0.2, false}, {0.5, 0.05, false}, {1.0, 7.2, true}, {0.5, 0.4, false}, {1.0, 0.6, false}};
+    const std::vector<Stripe> over = stripes_from_runs(runs, {0.0, true});
+    ASSERT_EQ(over.size(), 2u);
+    EXPECT_EQ(over[0].intensity, 0.5);
+    EXPECT_EQ(over[0].exceed, 0);
+    EXPECT_EQ(over[0].total, 2);
+    EXPECT_EQ(over[1].exceed, 1);
+    EXPECT_EQ(over[1].total, 3);
+    const std::vector<Stripe> r03 = stripes_from_runs(runs, {0.3, false});
+    EXPECT_EQ(r03[0].exceed, 1);
+    EXPECT_EQ(r03[1].exceed, 2);  // the overturned run and theta_max = 0.6 alpha
+    EXPECT_DOUBLE_EQ(r03[1].fraction(), 2.0 / 3.0);
+    EXPECT_THROW(stripes_from_runs(std::vector<IdaPoint>{{0.0, 0.1, false}}, {0.3, false}), std::invalid_argument);
+}

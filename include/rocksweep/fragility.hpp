@@ -27,7 +27,7 @@ struct LognormalFragility {
 enum class FitStatus {
     ok,
     none_reached,     ///< no record / no run reached the state: median above every intensity tried
-    all_reached,      ///< every record / run reached it at the lowest intensity: median below all
+    all_reached,      ///< stripes: every run reached it: median below every intensity tried
     zero_dispersion,  ///< capacities all equal, or stripes perfectly separated: beta -> 0
     not_identifiable, ///< one stripe with 0 < n < N and beta free: median and beta trade off
     decreasing,       ///< the stripes' best fit falls with intensity (beta < 0): not a fragility
@@ -133,5 +133,10 @@ IdaCapacity ida_capacity(std::span<const IdaPoint> curve, const DamageState& sta
 
 /// True if the run reached the state.
 bool reaches(const IdaPoint& run, const DamageState& state);
+
+/// Stripes from runs at a few intensities (each record scaled to each level): runs of equal
+/// intensity form one stripe, in increasing intensity. Throws std::invalid_argument for an
+/// intensity that is not positive and finite.
+std::vector<Stripe> stripes_from_runs(std::span<const IdaPoint> runs, const DamageState& state);
 
 }  // namespace rocksweep
