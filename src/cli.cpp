@@ -68,6 +68,9 @@ void add_model_options(CLI::App& app, Options& o) {
     app.add_option("--adaptive-break", o.anchorage.break_rule,
                    "Adaptive restrainer breaks at the K_max spring's angle, or when the force reaches F_u")
         ->check(one_of({"angle", "force"}))->capture_default_str()->group(anc);
+    app.add_option("--adaptive-law", o.anchorage.law,
+                   "Adaptive law: paper (Eq. 21-22) | passive (K_min -> K_max only while the spring is slack)")
+        ->check(one_of({"paper", "passive"}))->capture_default_str()->group(anc);
 
     GridOptions& g = o.grid;
     const char* grd = "Sweep grid and scenarios";
@@ -142,7 +145,7 @@ void print_info(const Options& o, std::ostream& out) {
     out << "scenarios\n";
     for (const Scenario& s : spec.scenarios) {
         const Anchorage& a = s.anchorage;
-        out << "  " << std::left << std::setw(22) << s.name << std::right << to_string(a.kind);
+        out << "  " << std::left << std::setw(26) << s.name << std::right << to_string(a.kind);
         if (a.kind != AnchorageKind::free) {
             out << "  F_u = " << a.strength_n << " N, theta_f = " << a.theta_f_rad << " rad (" << s.theta_f_ratio
                 << " alpha), K = " << a.k_max << " N/m";
