@@ -418,6 +418,8 @@ Dataset write_dataset(const Location& where, std::string_view name, std::span<co
 }
 
 namespace {
+constexpr std::size_t any_rank = SIZE_MAX;
+
 template <Element T>
 std::vector<T> read_all(const Dataset& ds, std::size_t rank, std::vector<hsize_t>& dims_out) {
     const std::string what = "reading dataset " + in_quotes(ds.name()) + " of " + in_quotes(ds.file_name());
@@ -425,7 +427,7 @@ std::vector<T> read_all(const Dataset& ds, std::size_t rank, std::vector<hsize_t
     if (!type_matches<T>(type.id()))
         throw Hdf5Error(what + ": expected " + Types<T>::kind + " data");
     dims_out = ds.dims();
-    if (dims_out.size() != rank)
+    if (rank != any_rank && dims_out.size() != rank)
         throw Hdf5Error(what + ": expected " + std::to_string(rank) + " dimension(s), found " +
                         std::to_string(dims_out.size()));
     std::size_t count = 1;
@@ -453,6 +455,13 @@ Array2<T> read_2d(const Location& where, std::string_view name) {
     return a;
 }
 
+template <Element T>
+ArrayN<T> read_array(const Location& where, std::string_view name) {
+    ArrayN<T> a;
+    a.values = read_all<T>(where.open_dataset(name), any_rank, a.dims);
+    return a;
+}
+
 template Dataset write_dataset<double>(const Location&, std::string_view, std::span<const double>,
                                        std::span<const hsize_t>);
 template Dataset write_dataset<std::int32_t>(const Location&, std::string_view,
@@ -462,6 +471,9 @@ template Dataset write_dataset<std::uint8_t>(const Location&, std::string_view,
 template std::vector<double> read_1d<double>(const Location&, std::string_view);
 template std::vector<std::int32_t> read_1d<std::int32_t>(const Location&, std::string_view);
 template std::vector<std::uint8_t> read_1d<std::uint8_t>(const Location&, std::string_view);
+template ArrayN<double> read_array<double>(const Location&, std::string_view);
+template ArrayN<std::int32_t> read_array<std::int32_t>(const Location&, std::string_view);
+template ArrayN<std::uint8_t> read_array<std::uint8_t>(const Location&, std::string_view);
 template Array2<double> read_2d<double>(const Location&, std::string_view);
 template Array2<std::int32_t> read_2d<std::int32_t>(const Location&, std::string_view);
 template Array2<std::uint8_t> read_2d<std::uint8_t>(const Location&, std::string_view);

@@ -230,6 +230,18 @@ struct Array2 {
     std::vector<T> values;
 };
 
+/// An array of any rank read back, C order.
+template <class T>
+struct ArrayN {
+    std::vector<hsize_t> dims;
+    std::vector<T> values;
+};
+
+/// Reads a whole dataset of any rank. Throws Hdf5Error if it is missing or its type is not of
+/// T's kind (float for double; integer of the same size and signedness otherwise).
+template <Element T>
+ArrayN<T> read_array(const Location& where, std::string_view name);
+
 /// Reads a whole 1-D dataset. Throws Hdf5Error if it is missing, not 1-D, or its type is not
 /// of T's kind (float for double; integer of the same size and signedness otherwise).
 template <Element T>
