@@ -248,8 +248,13 @@ Datatype Datatype::fixed_string_for(std::string_view text) {
                                    [](char c) { return static_cast<unsigned char>(c) < 0x80; });
     Datatype t(H5Tcopy(H5T_C_S1));
     if (!t.valid()) fail("copying the C string type");
-    check(H5Tset_size(t.id(), text.size() + 1), "sizing a string type");
-    check(H5Tset_strpad(t.id(), H5T_STR_NULLTERM), "setting string padding");
+    // Fixed-length, not variable-length: Octave's netcdf package cannot read NC_STRING
+    // attributes (its ncinfo fails on a group holding one). No terminator stored: netCDF
+    // reads a fixed-length string as NC_CHAR of its full size, so a stored NUL would reach
+    // Octave's and MATLAB's ncreadatt as a trailing char(0). HDF5 has no zero-size string
+    // type: "" is one NUL of padding, which every reader strips.
+    check(H5Tset_size(t.id(), std::max<std::size_t>(text.size(), 1)), "sizing a string type");
+    check(H5Tset_strpad(t.id(), H5T_STR_NULLPAD), "setting string padding");
     check(H5Tset_cset(t.id(), ascii ? H5T_CSET_ASCII : H5T_CSET_UTF8), "setting string charset");
     return t;
 }
@@ -494,7 +499,7 @@ void write_attribute(const Object& obj, std::string_view name, std::int64_t valu
 void write_attribute(const Object& obj, std::string_view name, std::string_view value) {
     const Datatype type = Datatype::fixed_string_for(value);
     const Attribute a = create_attribute(obj, name, type.id(), Dataspace::scalar());
-    const std::string buffer(value);  // c_str() supplies the terminator the type counts on
+    const std::string buffer(value);  // c_str() supplies the padding byte of ""
     check(H5Awrite(a.id(), type.id(), buffer.c_str()), "writing attribute " + in_quotes(name));
 }
 

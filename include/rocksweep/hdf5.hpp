@@ -87,8 +87,9 @@ class Datatype : public Handle {
 public:
     Datatype() = default;
     explicit Datatype(hid_t id) noexcept : Handle(id, H5Tclose) {}
-    /// Fixed-length, null-terminated string type able to hold `text` plus its terminator.
-    /// ASCII character set unless `text` has bytes >= 0x80 (then UTF-8).
+    /// Fixed-length string type of exactly text.size() bytes (1 for ""), null-padded, no
+    /// terminator stored: netCDF tools read it as text without a trailing NUL. ASCII character
+    /// set unless `text` has bytes >= 0x80 (then UTF-8). Throws Hdf5Error if `text` has a NUL.
     static Datatype fixed_string_for(std::string_view text);
 };
 
@@ -267,7 +268,7 @@ void write_attribute(const Object& obj, std::string_view name, I value) {
     }
     write_attribute(obj, name, static_cast<std::int64_t>(value));
 }
-/// Fixed-length, null-terminated string (see Datatype::fixed_string_for). Throws Hdf5Error
+/// Fixed-length string (see Datatype::fixed_string_for). Throws Hdf5Error
 /// if `value` contains a NUL byte.
 void write_attribute(const Object& obj, std::string_view name, std::string_view value);
 inline void write_attribute(const Object& obj, std::string_view name, const char* value) {
