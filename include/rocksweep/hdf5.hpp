@@ -299,7 +299,9 @@ void make_scale(const Dataset& scale, std::string_view scale_name);
 void attach_scale(const Dataset& data, const Dataset& scale, unsigned dim);
 /// True if `scale` is attached to dimension `dim` of `data`.
 bool is_attached(const Dataset& data, const Dataset& scale, unsigned dim);
-/// Labels dimension `dim` of `data` (shown by h5py's ds.dims[i].label and h5dump).
+/// Labels dimension `dim` of `data` (shown by h5py's ds.dims[i].label and h5dump). The labels
+/// are variable-length strings, on which Octave's netcdf package (ncinfo) fails, so the
+/// spectra and history files carry none.
 void set_dimension_label(const Dataset& data, unsigned dim, std::string_view label);
 
 // ---------------------------------------------------------------------------------------
