@@ -88,6 +88,30 @@ class Readers(unittest.TestCase):
                 self.assertEqual(root["alpha_rad"][0, 0], f.attrs["alpha_rad"])
                 self.assertIn("omega-ratio-points", text(field(S, "provenance")["config"]))
 
+    def test_read_spectra_permutes_a_grid_of_three_axes(self):
+        # The layout of a grid with one more axis (grid_layout.hpp), written here with h5py:
+        # fixed-length text as rocksweep writes it, each axis a scale attached to its dimension.
+        path = os.path.join(WORK, "three_axes.h5")
+        axes = {"amplitude_ratio": [1.0, 2.0], "omega_ratio": [1.0, 4.0, 7.0], "duration_s": [0.1, 0.2, 0.3, 0.4]}
+        with h5py.File(path, "w") as f:
+            g = f.create_group("spectra/sine")
+            g.attrs["index"] = np.int64(0)
+            g.attrs["anchorage"] = np.bytes_("free")
+            scales = []
+            for name, values in axes.items():
+                g[name] = np.array(values)
+                g[name].make_scale(name)
+                scales.append(g[name])
+            g["outcome"] = np.arange(24, dtype=np.uint8).reshape(2, 3, 4)
+            for d, scale in enumerate(scales):
+                g["outcome"].dims[d].attach_scale(scale)
+        S = octave("read_spectra", path)
+        self.assertEqual([str(a[0]) for a in S["axes"][0]], list(axes))
+        case = field(S, "sine")
+        self.expect_same(case["outcome"], np.arange(24, dtype=np.uint8).reshape(2, 3, 4), "outcome[2, 3, 4]")
+        for name, values in axes.items():
+            self.expect_same(S[name], np.array(values), name)
+
     def test_read_history_returns_every_dataset_as_h5py(self):
         H = octave("read_history", HISTORY)
         with h5py.File(HISTORY, "r") as f:
