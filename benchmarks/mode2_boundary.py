@@ -26,8 +26,9 @@ def boundary(outcome, amp):
 
 def main(path):
     with h5py.File(path, "r") as f:
-        amp = f["axes/amplitude_ratio"][:]
-        w = f["axes/omega_ratio"][:]
+        first = next(iter(f["spectra"].values()))  # every scenario group holds the same axes
+        amp = first["amplitude_ratio"][:]
+        w = first["omega_ratio"][:]
         step = amp[1] - amp[0]
         bounds = {name: boundary(f["spectra"][name]["outcome"][:], amp) for name in f["spectra"]}
     anchored = [n for n in bounds if n != "free"]

@@ -18,7 +18,7 @@ h5diff --exclude-path /provenance "$out/skip_default.h5" "$out/skip_lanes1.h5" >
 /usr/bin/python3 - "$out/skip_default.h5" <<'PY'
 import sys, h5py, numpy as np
 with h5py.File(sys.argv[1], "r") as f:
-    a = f["axes/amplitude_ratio"][:]
+    a = f["spectra/free/amplitude_ratio"][:]
     alpha = f.attrs["alpha_rad"]
     below = (a * alpha <= np.tan(alpha)).sum()
     print(f"cells below the uplift threshold, decided without integrating: {below} of {a.size} amplitude rows "

@@ -1,24 +1,29 @@
 function S = read_spectra(file)
-%READ_SPECTRA  Read a rocksweep overturning-spectra HDF5 file (layout: docs/hdf5.md).
+%READ_SPECTRA  Read a rocksweep overturning-spectra file (layout: docs/hdf5.md).
 %
 %   S = READ_SPECTRA(FILE) returns a struct with
 %     S.file             the file name
-%     S.omega_ratio      n_omega x 1, omega_p / p
-%     S.amplitude_ratio  n_amp x 1,   a_p0 / (alpha g)
+%     S.axes             the grid's axis names in the file's order, e.g.
+%                        {'amplitude_ratio', 'omega_ratio'}
+%     S.<axis>           each axis as a column vector (S.amplitude_ratio, S.omega_ratio)
 %     S.attrs            root attributes: block, pulse, n_cells, n_done, complete, ...
 %     S.provenance       attributes of /provenance (version, config, ranks, ...)
 %     S.scenario_names   cell array of the scenario field names, in config order
 %     S.(scenario)       one struct per scenario with
-%                          .name   the HDF5 group name (the field name may differ if the
-%                                  group name is not a valid MATLAB identifier)
+%                          .name   the group name (the field name may differ if the group
+%                                  name is not a valid identifier: constant_tf0.5 becomes
+%                                  constant_tf0_5)
 %                          .attrs  anchorage attributes (anchorage, theta_f_ratio, ...)
-%                          .outcome, .max_rotation, .impacts, .t_overturn,
-%                          .peak_force_ratio, .broken, .done   n_amp x n_omega matrices
+%                          .units  the units attribute of each dataset that has one
+%                          .outcome, .max_rotation, .impacts, .impacts_total, .t_overturn,
+%                          .peak_force_ratio, .broken, .mu_required, .pivot_uplift, .done
+%                                  arrays over the axes, of the file's types (uint8, int32,
+%                                  double), and the scenario's own copy of each axis
 %
-%   S.(scenario).outcome(i_amp, i_omega) is the cell at amplitude_ratio(i_amp) and
-%   omega_ratio(i_omega), as in the file's C-order [n_amp][n_omega] layout. MATLAB's h5read
-%   reports HDF5 dimensions in reverse order (n_omega x n_amp), so every grid is transposed
-%   here; do not transpose again.
+%   Arrays come in the file's index order: S.(scenario).outcome(i_amp, i_omega) is the cell
+%   at amplitude_ratio(i_amp) and omega_ratio(i_omega), the element [i_amp, i_omega] of
+%   h5py and numpy, whatever axes the grid has. ncread lists netCDF dimensions in reverse
+%   (column-major) order; every array is permuted back here: do not transpose again.
 %
 %   Outcome codes: 0 safe, 1 overturned with impact, 2 overturned without impact,
 %   255 not converged. Only cells with done == 1 hold results.
@@ -29,55 +34,61 @@ function S = read_spectra(file)
 %     imagesc(S.omega_ratio, S.amplitude_ratio, double(sc.outcome)); axis xy
 %     xlabel('\omega_p / p'); ylabel('a_{p0} / (\alpha g)'); title(sc.name, 'Interpreter', 'none')
 %
-%   Needs MATLAB R2014a or later (h5read, h5readatt, h5info, matlab.lang.makeValidName).
+%   Runs in MATLAB (R2012a or later) and in GNU Octave with the netcdf package
+%   (Debian: octave-netcdf; then "pkg load netcdf", done here when needed): it uses only
+%   ncinfo, ncread and their attribute values, which both have.
 
-    grids = {'outcome', 'max_rotation', 'impacts', 'impacts_total', 't_overturn', ...
-             'peak_force_ratio', 'broken', 'mu_required', 'pivot_uplift', 'done'};
-    reserved = {'file', 'omega_ratio', 'amplitude_ratio', 'attrs', 'provenance', ...
-                'scenario_names'};
+    load_netcdf();
+    reserved = {'file', 'axes', 'attrs', 'provenance', 'scenario_names'};
 
+    info = ncinfo(file);
     S = struct();
     S.file = file;
-    S.omega_ratio = h5read(file, '/axes/omega_ratio');
-    S.amplitude_ratio = h5read(file, '/axes/amplitude_ratio');
-    S.omega_ratio = S.omega_ratio(:);
-    S.amplitude_ratio = S.amplitude_ratio(:);
-    S.attrs = read_attributes(file, '/');
+    S.axes = {};
+    S.attrs = nc_attributes(info.Attributes);
     S.provenance = struct();
-    root = h5info(file, '/');
-    if any(strcmp({root.Groups.Name}, '/provenance'))
-        S.provenance = read_attributes(file, '/provenance');
+    prov = child_group(info, 'provenance');
+    if ~isempty(prov)
+        S.provenance = nc_attributes(prov.Attributes);
     end
 
-    n_amp = numel(S.amplitude_ratio);
-    n_omega = numel(S.omega_ratio);
-
-    spectra = h5info(file, '/spectra');
+    spectra = child_group(info, 'spectra');
+    if isempty(spectra)
+        error('read_spectra:layout', '%s: no /spectra group: not a rocksweep spectra file', file);
+    end
     groups = spectra.Groups;
-    % Group listings come in name order; the `index` attribute restores the config order.
+    % Groups come in name order; the `index` attribute restores the config order.
     order = zeros(1, numel(groups));
     for k = 1:numel(groups)
-        order(k) = double(h5readatt(file, groups(k).Name, 'index'));
+        a = nc_attributes(groups(k).Attributes);   % MATLAB cannot index a call's result
+        order(k) = double(a.index);
     end
     [~, perm] = sort(order);
     groups = groups(perm);
 
     S.scenario_names = {};
     for k = 1:numel(groups)
-        path = groups(k).Name;                     % e.g. '/spectra/constant_2'
-        slash = find(path == '/', 1, 'last');
-        name = path(slash + 1:end);
-
+        g = groups(k);
         sc = struct();
-        sc.name = name;
-        sc.attrs = read_attributes(file, path);
-        for g = 1:numel(grids)
-            raw = h5read(file, [path '/' grids{g}]);   % n_omega x n_amp as MATLAB sees it
-            sc.(grids{g}) = reshape(permute(raw, [2 1]), n_amp, n_omega);
+        sc.name = g.Name;
+        sc.attrs = nc_attributes(g.Attributes);
+        sc.units = struct();
+        for v = 1:numel(g.Variables)
+            var = g.Variables(v);
+            dims = {var.Dimensions.Name};          % fastest first, as ncread returns them
+            sc.(var.Name) = file_order(ncread(file, ['/spectra/' g.Name '/' var.Name]), numel(dims));
+            a = nc_attributes(var.Attributes);
+            if isfield(a, 'units')
+                sc.units.(var.Name) = a.units;
+            end
+            if numel(dims) == 1 && strcmp(dims{1}, var.Name)
+                S.(var.Name) = sc.(var.Name);       % an axis: the same in every scenario
+            elseif isempty(S.axes)
+                S.axes = fliplr(dims);
+            end
         end
-
-        field = matlab.lang.makeValidName(name);
-        if any(strcmp(field, reserved))
+        field = matlab.lang.makeValidName(g.Name);
+        if any(strcmp(field, [reserved, S.axes]))
             field = [field '_scenario'];
         end
         S.(field) = sc;
@@ -85,25 +96,22 @@ function S = read_spectra(file)
     end
 end
 
-function A = read_attributes(file, location)
-% All attributes of one group as a struct; strings as char rows without their terminator.
-    info = h5info(file, location);
-    A = struct();
-    for k = 1:numel(info.Attributes)
-        attr = info.Attributes(k).Name;
-        value = h5readatt(file, location, attr);
-        A.(matlab.lang.makeValidName(attr)) = clean_value(value);
+function x = file_order(x, n)
+% The array in the file's (C) index order: ncread gives the n dimensions reversed.
+    if n <= 1
+        x = x(:);
+    else
+        x = permute(x, n:-1:1);
     end
 end
 
-function v = clean_value(v)
-    if iscell(v) && numel(v) == 1
-        v = v{1};
+function g = child_group(info, name)
+    g = [];
+    if ~isfield(info, 'Groups') || isempty(info.Groups)
+        return
     end
-    if ischar(v)
-        v = reshape(v, 1, []);
-        v = v(v ~= char(0));   % fixed-length strings may arrive with their null byte
-    elseif isnumeric(v) && ~isscalar(v)
-        v = v(:);
+    k = find(strcmp({info.Groups.Name}, name), 1);
+    if ~isempty(k)
+        g = info.Groups(k);
     end
 end

@@ -4,10 +4,28 @@
 As a module:
     import read_spectra
     S = read_spectra.load("spectra.h5")
-    S["omega_ratio"], S["amplitude_ratio"]              # 1-D axes
-    sc = S["scenarios"]["constant_2"]                   # scenarios in config order
-    sc["outcome"][i_amp, i_omega]                        # 2-D numpy arrays, C order
-    sc["attrs"]["anchorage"]                             # "free" | "constant" | "adaptive"
+    S["axes"]                                  # the grid's axes in index order:
+                                               #   ["amplitude_ratio", "omega_ratio"]
+    S["amplitude_ratio"], S["omega_ratio"]     # each axis, 1-D
+    S["attrs"], S["provenance"]                # root and /provenance attributes (str, numbers)
+    sc = S["scenarios"]["constant_tf0.5"]      # scenarios in config order
+    sc["attrs"]["anchorage"]                   # "free" | "constant" | "adaptive", ...
+    sc["outcome"][i_amp, i_omega]              # numpy arrays over the axes, C order
+
+Every scenario holds these arrays (docs/hdf5.md says what each means):
+    outcome           uint8    0 safe, 1 overturned with impact, 2 without impact, 255 not converged
+    max_rotation      float64  max |theta| / alpha
+    impacts           int32    impacts above the settling threshold
+    impacts_total     int32    impacts, the settling one included
+    t_overturn        float64  [s] time of overturning; NaN if the block did not overturn
+    peak_force_ratio  float64  peak anchorage force / F_u; NaN for a free block
+    broken            uint8    bit 1: left spring broken, bit 2: right spring broken
+    mu_required       float64  friction coefficient needed to rock without sliding
+    pivot_uplift      uint8    1 if the pivot's vertical reaction went negative
+    done              uint8    0 pending, 1 computed, 2 inferred by --refine
+
+The file is netCDF-4 readable too: xarray.open_dataset(path, group="spectra/free") gives the
+same arrays with the axes as coordinates.
 
 As a program:
     read_spectra.py FILE       prints, per scenario, how many cells ended in each outcome.
@@ -42,20 +60,30 @@ def _attrs(obj):
     return {k: _value(v) for k, v in obj.attrs.items()}
 
 
-def load(path):
-    """Returns {"omega_ratio", "amplitude_ratio": 1-D arrays, "attrs": root attributes,
-    "provenance": dict, "scenarios": {name: {"attrs": dict, <dataset>: 2-D array}}}.
+def _axis_names(group):
+    """The grid's axes in index order, from a result dataset's `dimensions` attribute."""
+    return [n.strip() for n in _value(group["outcome"].attrs["dimensions"]).split(",")]
 
-    Each 2-D array has shape (n_amp, n_omega): [i_amp, i_omega]. Scenarios keep the order
-    of the config (their `index` attribute)."""
+
+def load(path):
+    """Returns {"axes": axis names in index order, <axis>: 1-D array for each axis,
+    "attrs": root attributes, "provenance": dict,
+    "scenarios": {name: {"attrs": dict, <dataset>: array over the axes}}}.
+
+    Arrays are indexed in the order of "axes": [i_amp, i_omega]. Scenarios keep the order
+    of the config (their `index` attribute). Files of format_version 1 (axes in /axes) are
+    read too."""
     with h5py.File(path, "r") as f:
-        out = {
-            "omega_ratio": f["axes/omega_ratio"][()],
-            "amplitude_ratio": f["axes/amplitude_ratio"][()],
-            "attrs": _attrs(f),
-            "provenance": _attrs(f["provenance"]) if "provenance" in f else {},
-        }
         groups = sorted(f["spectra"].items(), key=lambda kv: kv[1].attrs.get("index", 0))
+        if not groups:
+            raise SystemExit("{}: no scenario under /spectra".format(path))
+        names = _axis_names(groups[0][1])
+        # Version 2 keeps the axes in every scenario group (all equal), version 1 in /axes.
+        axes = f["axes"] if "axes" in f else groups[0][1]
+        out = {"axes": names}
+        out.update({n: axes[n][()] for n in names})
+        out["attrs"] = _attrs(f)
+        out["provenance"] = _attrs(f["provenance"]) if "provenance" in f else {}
         scenarios = {}
         for name, g in groups:
             sc = {"attrs": _attrs(g)}
@@ -74,9 +102,7 @@ def summary(S):
         "cells: {} done of {}{}".format(
             a.get("n_done"), a.get("n_cells"), "" if a.get("complete") == 1 else " (partial)"
         ),
-        "grid: {} amplitude_ratio x {} omega_ratio".format(
-            len(S["amplitude_ratio"]), len(S["omega_ratio"])
-        ),
+        "grid: " + " x ".join("{} {}".format(len(S[n]), n) for n in S["axes"]),
     ]
     width = max([len(n) for n in S["scenarios"]] + [8])
     short = {0: "safe", 1: "mode1_impact", 2: "mode2_no_impact", 255: "not_converged"}

@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # Installs the Debian packages rocksweep needs (only those missing) and builds Release into
-# build/. Sourced by run.sh and test.sh.
+# build/. Sourced by run.sh and test.sh; a script that sources it may first list more packages
+# in `extra_packages` (test.sh: the tools the tests read the files with).
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 packages=(build-essential cmake libopenmpi-dev openmpi-bin libhdf5-dev hdf5-tools
-          libcli11-dev libgtest-dev python3-h5py python3-numpy python3-matplotlib)
+          libcli11-dev libgtest-dev python3-h5py python3-numpy python3-matplotlib
+          ${extra_packages[@]+"${extra_packages[@]}"})
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

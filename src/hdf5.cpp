@@ -248,8 +248,13 @@ Datatype Datatype::fixed_string_for(std::string_view text) {
                                    [](char c) { return static_cast<unsigned char>(c) < 0x80; });
     Datatype t(H5Tcopy(H5T_C_S1));
     if (!t.valid()) fail("copying the C string type");
-    check(H5Tset_size(t.id(), text.size() + 1), "sizing a string type");
-    check(H5Tset_strpad(t.id(), H5T_STR_NULLTERM), "setting string padding");
+    // Fixed-length, not variable-length: Octave's netcdf package cannot read NC_STRING
+    // attributes (its ncinfo fails on a group holding one). No terminator stored: netCDF
+    // reads a fixed-length string as NC_CHAR of its full size, so a stored NUL would reach
+    // Octave's and MATLAB's ncreadatt as a trailing char(0). HDF5 has no zero-size string
+    // type: "" is one NUL of padding, which every reader strips.
+    check(H5Tset_size(t.id(), std::max<std::size_t>(text.size(), 1)), "sizing a string type");
+    check(H5Tset_strpad(t.id(), H5T_STR_NULLPAD), "setting string padding");
     check(H5Tset_cset(t.id(), ascii ? H5T_CSET_ASCII : H5T_CSET_UTF8), "setting string charset");
     return t;
 }
@@ -418,6 +423,8 @@ Dataset write_dataset(const Location& where, std::string_view name, std::span<co
 }
 
 namespace {
+constexpr std::size_t any_rank = SIZE_MAX;
+
 template <Element T>
 std::vector<T> read_all(const Dataset& ds, std::size_t rank, std::vector<hsize_t>& dims_out) {
     const std::string what = "reading dataset " + in_quotes(ds.name()) + " of " + in_quotes(ds.file_name());
@@ -425,7 +432,7 @@ std::vector<T> read_all(const Dataset& ds, std::size_t rank, std::vector<hsize_t
     if (!type_matches<T>(type.id()))
         throw Hdf5Error(what + ": expected " + Types<T>::kind + " data");
     dims_out = ds.dims();
-    if (dims_out.size() != rank)
+    if (rank != any_rank && dims_out.size() != rank)
         throw Hdf5Error(what + ": expected " + std::to_string(rank) + " dimension(s), found " +
                         std::to_string(dims_out.size()));
     std::size_t count = 1;
@@ -453,6 +460,13 @@ Array2<T> read_2d(const Location& where, std::string_view name) {
     return a;
 }
 
+template <Element T>
+ArrayN<T> read_array(const Location& where, std::string_view name) {
+    ArrayN<T> a;
+    a.values = read_all<T>(where.open_dataset(name), any_rank, a.dims);
+    return a;
+}
+
 template Dataset write_dataset<double>(const Location&, std::string_view, std::span<const double>,
                                        std::span<const hsize_t>);
 template Dataset write_dataset<std::int32_t>(const Location&, std::string_view,
@@ -462,6 +476,9 @@ template Dataset write_dataset<std::uint8_t>(const Location&, std::string_view,
 template std::vector<double> read_1d<double>(const Location&, std::string_view);
 template std::vector<std::int32_t> read_1d<std::int32_t>(const Location&, std::string_view);
 template std::vector<std::uint8_t> read_1d<std::uint8_t>(const Location&, std::string_view);
+template ArrayN<double> read_array<double>(const Location&, std::string_view);
+template ArrayN<std::int32_t> read_array<std::int32_t>(const Location&, std::string_view);
+template ArrayN<std::uint8_t> read_array<std::uint8_t>(const Location&, std::string_view);
 template Array2<double> read_2d<double>(const Location&, std::string_view);
 template Array2<std::int32_t> read_2d<std::int32_t>(const Location&, std::string_view);
 template Array2<std::uint8_t> read_2d<std::uint8_t>(const Location&, std::string_view);
@@ -482,7 +499,7 @@ void write_attribute(const Object& obj, std::string_view name, std::int64_t valu
 void write_attribute(const Object& obj, std::string_view name, std::string_view value) {
     const Datatype type = Datatype::fixed_string_for(value);
     const Attribute a = create_attribute(obj, name, type.id(), Dataspace::scalar());
-    const std::string buffer(value);  // c_str() supplies the terminator the type counts on
+    const std::string buffer(value);  // c_str() supplies the padding byte of ""
     check(H5Awrite(a.id(), type.id(), buffer.c_str()), "writing attribute " + in_quotes(name));
 }
 

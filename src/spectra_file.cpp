@@ -11,15 +11,24 @@
 #include <vector>
 
 #include "rocksweep/errors.hpp"
+#include "rocksweep/grid_layout.hpp"
 #include "rocksweep/hdf5.hpp"
 
 namespace rocksweep {
 
 namespace {
 
-// Bumped when the layout changes in a way a reader must know about.
-constexpr std::int64_t format_version = 1;
-constexpr const char* grid_dimensions = "amplitude_ratio, omega_ratio";
+// Bumped when the layout changes in a way a reader must know about. 2: the axes moved from
+// /axes into every scenario group, where netCDF-4 readers look for dimensions.
+constexpr std::int64_t format_version = 2;
+
+// The axes of every scenario's grid, slowest first: they alone shape the layout.
+std::vector<GridAxis> grid_axes(const SweepSpec& spec) {
+    return {
+        {"amplitude_ratio", "1", "a_p0 / (alpha g)", spec.amplitude_ratio.values()},
+        {"omega_ratio", "1", "omega_p / p", spec.omega_ratio.values()},
+    };
+}
 
 // Attributes that define the cells: written by write_spectra and compared by
 // read_spectra_results, so the two can never disagree about what "the same sweep" means.
@@ -131,33 +140,10 @@ void check_scenario_names(const SweepSpec& spec) {
 // ---------------------------------------------------------------------------------------
 // Writing
 
-struct Axes {
-    h5::Dataset omega;      // dimension 1 of every grid
-    h5::Dataset amplitude;  // dimension 0
-};
-
-h5::Dataset write_axis(const h5::Group& group, const char* name, const Axis& axis,
-                       const char* long_name) {
-    const std::vector<double> values = axis.values();
-    h5::Dataset ds = h5::write_1d<double>(group, name, values);
-    h5::write_attribute(ds, "units", "1");
-    h5::write_attribute(ds, "long_name", long_name);
-    h5::make_scale(ds, name);
-    return ds;
-}
-
+// One scenario's block of a column (the columns hold the scenarios one after the other).
 template <h5::Element T>
-h5::Dataset write_grid(const h5::Group& group, const char* name, const std::vector<T>& column,
-                       std::size_t scenario, const SweepSpec& spec, const Axes& axes) {
-    const std::size_t n_amp = spec.amplitude_ratio.points, n_omega = spec.omega_ratio.points;
-    const std::span<const T> block(column.data() + scenario * n_amp * n_omega, n_amp * n_omega);
-    h5::Dataset ds = h5::write_2d<T>(group, name, block, n_amp, n_omega);
-    h5::write_attribute(ds, "dimensions", grid_dimensions);
-    h5::attach_scale(ds, axes.amplitude, 0);
-    h5::attach_scale(ds, axes.omega, 1);
-    h5::set_dimension_label(ds, 0, "amplitude_ratio");
-    h5::set_dimension_label(ds, 1, "omega_ratio");
-    return ds;
+std::span<const T> scenario_block(const std::vector<T>& column, std::size_t scenario, std::size_t cells) {
+    return {column.data() + scenario * cells, cells};
 }
 
 void write_root(const h5::File& f, const SweepSpec& spec, const IntegratorSettings& settings,
@@ -180,88 +166,69 @@ void write_root(const h5::File& f, const SweepSpec& spec, const IntegratorSettin
     h5::write_attribute(f, "complete", std::int64_t{n_done == n_cells ? 1 : 0});
 }
 
-Axes write_axes(const h5::File& f, const SweepSpec& spec) {
-    const h5::Group g = f.create_group("axes");
-    Axes axes;
-    axes.omega = write_axis(g, "omega_ratio", spec.omega_ratio, "omega_p / p");
-    axes.amplitude = write_axis(g, "amplitude_ratio", spec.amplitude_ratio, "a_p0 / (alpha g)");
-    return axes;
-}
-
 /// A measured quantity: the grid with its units, long_name and, where there is one, comment.
-template <typename T>
-void write_measure(const h5::Group& g, const char* name, const std::vector<T>& column, std::size_t index,
-                   const SweepSpec& spec, const Axes& axes, const char* units, const char* long_name,
-                   const char* comment = nullptr) {
-    const h5::Dataset ds = write_grid(g, name, column, index, spec, axes);
+template <h5::Element T>
+void write_measure(const GridGroup& grid, const char* name, const std::vector<T>& column, std::size_t index,
+                   const char* units, const char* long_name, const char* comment = nullptr) {
+    const h5::Dataset ds = grid.write<T>(name, scenario_block(column, index, grid.cell_count()));
     h5::write_attribute(ds, "units", units);
     h5::write_attribute(ds, "long_name", long_name);
     if (comment) h5::write_attribute(ds, "comment", comment);
 }
 
+/// A code: the grid with its long_name and the CF flag attributes (flag_values or flag_masks,
+/// flag_meanings), and a comment where there is one.
+void write_code(const GridGroup& grid, const char* name, const std::vector<std::uint8_t>& column,
+                std::size_t index, const char* long_name, const char* flag_kind,
+                std::span<const std::uint8_t> flags, const char* meanings, const char* comment = nullptr) {
+    const h5::Dataset ds = grid.write<std::uint8_t>(name, scenario_block(column, index, grid.cell_count()));
+    h5::write_attribute(ds, "long_name", long_name);
+    h5::write_attribute(ds, flag_kind, flags);
+    h5::write_attribute(ds, "flag_meanings", meanings);
+    if (comment) h5::write_attribute(ds, "comment", comment);
+}
+
 void write_scenario(const h5::Group& spectra, std::size_t index, const SweepSpec& spec,
-                    const SweepResults& r, const Axes& axes) {
+                    const SweepResults& r, std::span<const GridAxis> axes) {
     const Scenario& s = spec.scenarios[index];
     const h5::Group g = spectra.create_group(s.name);
     h5::write_attribute(g, "index", index);  // position in the config: group listings sort by name
     for (const NamedText& t : scenario_texts(s)) h5::write_attribute(g, t.name, t.value);
     for (const NamedNumber& n : scenario_numbers(s)) h5::write_attribute(g, n.name, n.value);
+    const GridGroup grid(g, axes);
 
-    {
-        const h5::Dataset ds = write_grid(g, "outcome", r.outcome, index, spec, axes);
-        const std::uint8_t values[] = {0, 1, 2, 255};
-        h5::write_attribute(ds, "long_name", "outcome of the pulse");
-        h5::write_attribute(ds, "flag_values", std::span<const std::uint8_t>(values));
-        h5::write_attribute(ds, "flag_meanings",
-                            "safe overturned_with_impact overturned_without_impact not_converged");
-    }
-    write_measure(g, "max_rotation", r.max_rotation, index, spec, axes, "1",
-                  "max |theta| / alpha");
-    write_measure(g, "impacts", r.impacts, index, spec, axes, "1",
-                  "impacts with approach speed above the threshold");
-    write_measure(g, "impacts_total", r.impacts_total, index, spec, axes, "1",
+    const std::uint8_t outcomes[] = {0, 1, 2, 255};
+    write_code(grid, "outcome", r.outcome, index, "outcome of the pulse", "flag_values", outcomes,
+               "safe overturned_with_impact overturned_without_impact not_converged");
+    write_measure(grid, "max_rotation", r.max_rotation, index, "1", "max |theta| / alpha");
+    write_measure(grid, "impacts", r.impacts, index, "1", "impacts with approach speed above the threshold");
+    write_measure(grid, "impacts_total", r.impacts_total, index, "1",
                   "impacts, the settling one included",
                   "the first impact slower than impact_threshold p alpha puts the block at rest "
                   "(the rest would pile up in finite time); it counts here, not in impacts");
-    write_measure(g, "t_overturn", r.t_overturn, index, spec, axes, "s",
+    write_measure(grid, "t_overturn", r.t_overturn, index, "s",
                   "time at which |theta| reached pi/2",
                   "NaN when the block did not overturn");
-    write_measure(g, "peak_force_ratio", r.peak_force_ratio, index, spec, axes, "1",
+    write_measure(grid, "peak_force_ratio", r.peak_force_ratio, index, "1",
                   "peak anchorage force / F_u",
                   "NaN for a free-standing block");
-    {
-        const h5::Dataset ds = write_grid(g, "broken", r.broken, index, spec, axes);
-        const std::uint8_t masks[] = {broken_left, broken_right};
-        h5::write_attribute(ds, "long_name", "restrainers broken during the run");
-        h5::write_attribute(ds, "flag_masks", std::span<const std::uint8_t>(masks));
-        h5::write_attribute(ds, "flag_meanings", "left_spring_broken right_spring_broken");
-        h5::write_attribute(ds, "comment",
-                            "bit 1: left spring (works for theta > 0); bit 2: right spring "
-                            "(works for theta < 0)");
-    }
-    write_measure(g, "mu_required", r.mu_required, index, spec, axes, "1",
+    const std::uint8_t masks[] = {broken_left, broken_right};
+    write_code(grid, "broken", r.broken, index, "restrainers broken during the run", "flag_masks", masks,
+               "left_spring_broken right_spring_broken",
+               "bit 1: left spring (works for theta > 0); bit 2: right spring (works for theta < 0)");
+    write_measure(grid, "mu_required", r.mu_required, index, "1",
                   "friction coefficient needed to rock without sliding, max |f_x / f_y|",
                   "base reactions from the motion of the centre of mass (Eq. 16-18); where it exceeds the "
                   "interface's static friction coefficient the block would slide and this cell's "
                   "pure-rocking result does not hold");
-    {
-        const h5::Dataset ds = write_grid(g, "pivot_uplift", r.pivot_uplift, index, spec, axes);
-        const std::uint8_t values[] = {0, 1};
-        h5::write_attribute(ds, "long_name", "vertical reaction at the pivot went negative");
-        h5::write_attribute(ds, "flag_values", std::span<const std::uint8_t>(values));
-        h5::write_attribute(ds, "flag_meanings", "pivot_stays_down pivot_lifts");
-        h5::write_attribute(ds, "comment", "1: the block would jump; the rocking model does not hold there");
-    }
-    {
-        const h5::Dataset ds = write_grid(g, "done", r.done, index, spec, axes);
-        const std::uint8_t values[] = {0, 1, 2};
-        h5::write_attribute(ds, "long_name", "cell computed");
-        h5::write_attribute(ds, "flag_values", std::span<const std::uint8_t>(values));
-        h5::write_attribute(ds, "flag_meanings", "pending computed inferred");
-        h5::write_attribute(ds, "comment",
-                            "the other datasets are meaningful only where done = 1; done = 2: outcome inferred by "
-                            "boundary refinement from a uniform square of computed cells (other datasets NaN/0)");
-    }
+    const std::uint8_t uplift[] = {0, 1};
+    write_code(grid, "pivot_uplift", r.pivot_uplift, index, "vertical reaction at the pivot went negative",
+               "flag_values", uplift, "pivot_stays_down pivot_lifts",
+               "1: the block would jump; the rocking model does not hold there");
+    const std::uint8_t done[] = {0, 1, 2};
+    write_code(grid, "done", r.done, index, "cell computed", "flag_values", done, "pending computed inferred",
+               "the other datasets are meaningful only where done = 1; done = 2: outcome inferred by "
+               "boundary refinement from a uniform square of computed cells (other datasets NaN/0)");
 }
 
 void write_provenance(const h5::File& f, const Provenance& prov, const IntegratorSettings& settings) {
@@ -283,7 +250,7 @@ void write_contents(const h5::File& f, const SweepSpec& spec, const SweepResults
     // /provenance too.
     write_root(f, spec, settings, r);
     h5::write_attribute(f, "rocksweep_version", prov.version);
-    const Axes axes = write_axes(f, spec);
+    const std::vector<GridAxis> axes = grid_axes(spec);
     const h5::Group spectra = f.create_group("spectra");
     for (std::size_t i = 0; i < spec.scenarios.size(); ++i) write_scenario(spectra, i, spec, r, axes);
     write_provenance(f, prov, settings);
@@ -294,19 +261,6 @@ void write_contents(const h5::File& f, const SweepSpec& spec, const SweepResults
 
 [[noreturn]] void mismatch(const std::string& path, const std::string& what) {
     throw InputError("spectra file", path, "a file written for the same sweep (" + what + ")");
-}
-
-void compare_axis(const std::string& path, const h5::File& f, const char* name, const Axis& axis) {
-    const std::vector<double> in_file = h5::read_1d<double>(f, std::string("axes/") + name);
-    const std::vector<double> expected = axis.values();
-    if (in_file.size() != expected.size())
-        mismatch(path, std::string(name) + " has " + std::to_string(in_file.size()) +
-                           " points in the file, " + std::to_string(expected.size()) + " in the config");
-    for (std::size_t i = 0; i < expected.size(); ++i)
-        if (!same_number(in_file[i], expected[i]))
-            mismatch(path, std::string(name) + "[" + std::to_string(i) + "] is " +
-                               format_number(in_file[i]) + " in the file, " +
-                               format_number(expected[i]) + " in the config");
 }
 
 void compare_number(const std::string& path, const h5::Object& obj, const NamedNumber& n) {
@@ -342,22 +296,19 @@ void compare_setting(const std::string& path, const h5::File& f, const Setting& 
 }
 
 template <h5::Element T>
-void read_grid(const std::string& path, const h5::Group& g, const char* name,
-               std::vector<T>& column, std::size_t scenario, const SweepSpec& spec) {
-    const std::size_t n_amp = spec.amplitude_ratio.points, n_omega = spec.omega_ratio.points;
-    const h5::Array2<T> a = h5::read_2d<T>(g, name);
-    if (a.rows != n_amp || a.cols != n_omega)
-        mismatch(path, g.name() + "/" + name + " is " + std::to_string(a.rows) + " x " +
-                           std::to_string(a.cols) + ", the config needs " + std::to_string(n_amp) +
-                           " x " + std::to_string(n_omega));
+void read_grid(const std::string& path, const h5::Group& g, const char* name, std::vector<T>& column,
+               std::size_t scenario, std::span<const GridAxis> axes) {
+    const std::vector<hsize_t> expected = grid_dims(axes);
+    const h5::ArrayN<T> a = h5::read_array<T>(g, name);
+    if (a.dims != expected)
+        mismatch(path, g.name() + "/" + name + " is " + dims_text(a.dims) + ", the config needs " +
+                           dims_text(expected));
     std::copy(a.values.begin(), a.values.end(),
-              column.begin() + static_cast<std::ptrdiff_t>(scenario * n_amp * n_omega));
+              column.begin() + static_cast<std::ptrdiff_t>(scenario * a.values.size()));
 }
 
 SweepResults read_contents(const std::string& path, const h5::File& f, const SweepSpec& spec,
                            const IntegratorSettings& settings) {
-    compare_axis(path, f, "omega_ratio", spec.omega_ratio);
-    compare_axis(path, f, "amplitude_ratio", spec.amplitude_ratio);
     for (const NamedNumber& n : root_numbers(spec)) compare_number(path, f, n);
     for (const Setting& x : result_settings(spec, settings)) compare_setting(path, f, x);
 
@@ -375,6 +326,7 @@ SweepResults read_contents(const std::string& path, const h5::File& f, const Swe
         mismatch(path, "scenarios in the file: " + join(in_file) + "; in the config: " + join(expected));
     }
 
+    const std::vector<GridAxis> axes = grid_axes(spec);
     SweepResults r;
     r.resize(spec.cell_count());
     for (std::size_t i = 0; i < spec.scenarios.size(); ++i) {
@@ -382,16 +334,17 @@ SweepResults read_contents(const std::string& path, const h5::File& f, const Swe
         const h5::Group g = spectra.open_group(s.name);
         for (const NamedText& t : scenario_texts(s)) compare_text(path, g, t.name, t.value);
         for (const NamedNumber& n : scenario_numbers(s)) compare_number(path, g, n);
-        read_grid(path, g, "outcome", r.outcome, i, spec);
-        read_grid(path, g, "max_rotation", r.max_rotation, i, spec);
-        read_grid(path, g, "impacts", r.impacts, i, spec);
-        read_grid(path, g, "t_overturn", r.t_overturn, i, spec);
-        read_grid(path, g, "peak_force_ratio", r.peak_force_ratio, i, spec);
-        read_grid(path, g, "broken", r.broken, i, spec);
-        read_grid(path, g, "impacts_total", r.impacts_total, i, spec);
-        read_grid(path, g, "mu_required", r.mu_required, i, spec);
-        read_grid(path, g, "pivot_uplift", r.pivot_uplift, i, spec);
-        read_grid(path, g, "done", r.done, i, spec);
+        if (const std::string diff = axes_difference(g, axes); !diff.empty()) mismatch(path, g.name() + ": " + diff);
+        read_grid(path, g, "outcome", r.outcome, i, axes);
+        read_grid(path, g, "max_rotation", r.max_rotation, i, axes);
+        read_grid(path, g, "impacts", r.impacts, i, axes);
+        read_grid(path, g, "t_overturn", r.t_overturn, i, axes);
+        read_grid(path, g, "peak_force_ratio", r.peak_force_ratio, i, axes);
+        read_grid(path, g, "broken", r.broken, i, axes);
+        read_grid(path, g, "impacts_total", r.impacts_total, i, axes);
+        read_grid(path, g, "mu_required", r.mu_required, i, axes);
+        read_grid(path, g, "pivot_uplift", r.pivot_uplift, i, axes);
+        read_grid(path, g, "done", r.done, i, axes);
     }
     return r;
 }
@@ -421,9 +374,12 @@ SweepResults read_spectra_results(const std::string& path, const SweepSpec& spec
     if (f.exists("theta") && f.exists("t")) throw not_spectra("a history written by rocksweep simulate");
     if (!f.has_attribute("format_version") || !f.exists("spectra"))
         throw not_spectra("an HDF5 file that rocksweep sweep did not write");
-    if (h5::read_int64_attribute(f, "format_version") != format_version)
-        throw not_spectra("of format version " + std::to_string(h5::read_int64_attribute(f, "format_version")) +
-                          "; this rocksweep reads " + std::to_string(format_version));
+    if (const std::int64_t v = h5::read_int64_attribute(f, "format_version"); v != format_version)
+        throw InputError("output", path,
+                         "a spectra file of format version " + std::to_string(format_version) +
+                             " to resume; it is of version " + std::to_string(v) +
+                             (v < format_version ? " (an older layout, axes in /axes)" : " (a newer rocksweep's)") +
+                             ", which this rocksweep does not continue: sweep again with --overwrite");
     try {
         return read_contents(path, f, spec, settings);
     } catch (const Hdf5Error& e) {

@@ -117,13 +117,17 @@ TEST(SpectraFile, LayoutAxesScalesAndAttributes) {
     const h5::File f = h5::File::open_read_only(path);
     EXPECT_TRUE(f.exists("spectra/free/outcome"));
     EXPECT_FALSE(f.exists("spectra/nope/outcome"));  // a missing parent is "no", not an error
-    EXPECT_EQ(f.children(), (std::vector<std::string>{"axes", "provenance", "spectra"}));
-    EXPECT_EQ(h5::read_1d<double>(f, "axes/omega_ratio"), spec.omega_ratio.values());
-    EXPECT_EQ(h5::read_1d<double>(f, "axes/amplitude_ratio"), spec.amplitude_ratio.values());
+    EXPECT_EQ(f.children(), (std::vector<std::string>{"provenance", "spectra"}));
 
     {
-        const h5::Dataset omega = f.open_dataset("axes/omega_ratio");
-        const h5::Dataset amp = f.open_dataset("axes/amplitude_ratio");
+        // Each scenario group holds its own axes, where netCDF-4 looks for dimensions.
+        for (const char* group : {"spectra/free", "spectra/constant_alpha"}) {
+            const h5::Group g = f.open_group(group);
+            EXPECT_EQ(h5::read_1d<double>(g, "omega_ratio"), spec.omega_ratio.values()) << group;
+            EXPECT_EQ(h5::read_1d<double>(g, "amplitude_ratio"), spec.amplitude_ratio.values()) << group;
+        }
+        const h5::Dataset omega = f.open_dataset("spectra/free/omega_ratio");
+        const h5::Dataset amp = f.open_dataset("spectra/free/amplitude_ratio");
         EXPECT_EQ(h5::read_string_attribute(omega, "long_name"), "omega_p / p");
         EXPECT_EQ(h5::read_string_attribute(amp, "long_name"), "a_p0 / (alpha g)");
         EXPECT_EQ(h5::read_string_attribute(amp, "units"), "1");
@@ -137,6 +141,9 @@ TEST(SpectraFile, LayoutAxesScalesAndAttributes) {
             EXPECT_TRUE(h5::is_attached(ds, omega, 1));
             EXPECT_FALSE(h5::is_attached(ds, omega, 0));
             EXPECT_EQ(h5::read_string_attribute(ds, "dimensions"), "amplitude_ratio, omega_ratio");
+            // No HDF5 dimension labels: they are variable-length strings, which Octave's
+            // netcdf package cannot read.
+            EXPECT_FALSE(ds.has_attribute("DIMENSION_LABELS"));
         }
         // Explicit little-endian file types.
         const h5::Dataset outcome = f.open_dataset("spectra/free/outcome");
@@ -201,7 +208,7 @@ TEST(SpectraFile, SameInputsGiveByteIdenticalFiles) {
     EXPECT_EQ(slurp(dir.file("a.h5")), slurp(dir.file("b.h5")));
 
     const h5::File f = h5::File::open_read_only(dir.file("a.h5"));
-    for (const char* name : {"/", "/spectra/free", "/spectra/free/outcome", "/axes/omega_ratio"}) {
+    for (const char* name : {"/", "/spectra/free", "/spectra/free/outcome", "/spectra/free/omega_ratio"}) {
         H5O_info_t info{};
         ASSERT_GE(H5Oget_info_by_name2(f.id(), name, &info, H5O_INFO_TIME, H5P_DEFAULT), 0);
         EXPECT_EQ(info.ctime, 0) << name;
@@ -330,6 +337,30 @@ TEST(SpectraFile, ReadOfMissingFileIsAnInputError) {
     EXPECT_THROW(read_spectra_results(dir.file("absent.h5"), small_spec(), IntegratorSettings{}), InputError);
 }
 
+TEST(SpectraFile, ResumeOfTheOldLayoutIsRefusedInOneLine) {
+    // Format version 1 kept the axes in /axes, beside /spectra: what such a file holds at the
+    // points the reader looks at first.
+    TempDir dir;
+    const std::string path = dir.file("old.h5");
+    {
+        h5::File f = h5::File::create(path);
+        h5::write_attribute(f, "format_version", std::int64_t{1});
+        const std::vector<double> omega = small_spec().omega_ratio.values();
+        h5::write_1d<double>(f.create_group("axes"), "omega_ratio", omega);
+        f.create_group("spectra");
+        f.close();
+    }
+    try {
+        read_spectra_results(path, small_spec(), IntegratorSettings{});
+        FAIL() << "expected InputError";
+    } catch (const InputError& e) {
+        const std::string what = cli_message(e);
+        EXPECT_EQ(what, "--output = " + path + " is invalid: a spectra file of format version 2 to resume; it is of "
+                        "version 1 (an older layout, axes in /axes), which this rocksweep does not continue: sweep "
+                        "again with --overwrite");
+    }
+}
+
 // ---------------------------------------------------------------------------------------
 // HDF5 layer
 
@@ -412,6 +443,19 @@ TEST(Hdf5, AttributesRoundTripIncludingLongText) {
     EXPECT_EQ(h5::read_string_attribute(f, "empty"), "");
     EXPECT_EQ(h5::read_string_attribute(f, "utf8"), "θ_f = α/2");
     EXPECT_EQ(h5::read_string_attribute(f, "long"), long_text);
+    // Stored without a terminator (netCDF would hand it to ncreadatt as a trailing char(0)):
+    // exactly the text's bytes, null-padded; "" as one byte of padding.
+    for (const auto& [name, bytes] : {std::pair<const char*, std::size_t>{"utf8", std::string("θ_f = α/2").size()},
+                                      {"empty", 1}}) {
+        const hid_t a = H5Aopen(f.id(), name, H5P_DEFAULT);
+        ASSERT_GE(a, 0);
+        const hid_t t = H5Aget_type(a);
+        EXPECT_EQ(H5Tget_size(t), bytes) << name;
+        EXPECT_EQ(H5Tget_strpad(t), H5T_STR_NULLPAD) << name;
+        EXPECT_EQ(H5Tis_variable_str(t), 0) << name;
+        H5Tclose(t);
+        H5Aclose(a);
+    }
     EXPECT_THROW(h5::read_int64_attribute(f, "x"), Hdf5Error);
     EXPECT_THROW(h5::read_double_attribute(f, "missing"), Hdf5Error);
 }

@@ -87,8 +87,9 @@ class Datatype : public Handle {
 public:
     Datatype() = default;
     explicit Datatype(hid_t id) noexcept : Handle(id, H5Tclose) {}
-    /// Fixed-length, null-terminated string type able to hold `text` plus its terminator.
-    /// ASCII character set unless `text` has bytes >= 0x80 (then UTF-8).
+    /// Fixed-length string type of exactly text.size() bytes (1 for ""), null-padded, no
+    /// terminator stored: netCDF tools read it as text without a trailing NUL. ASCII character
+    /// set unless `text` has bytes >= 0x80 (then UTF-8). Throws Hdf5Error if `text` has a NUL.
     static Datatype fixed_string_for(std::string_view text);
 };
 
@@ -230,6 +231,18 @@ struct Array2 {
     std::vector<T> values;
 };
 
+/// An array of any rank read back, C order.
+template <class T>
+struct ArrayN {
+    std::vector<hsize_t> dims;
+    std::vector<T> values;
+};
+
+/// Reads a whole dataset of any rank. Throws Hdf5Error if it is missing or its type is not of
+/// T's kind (float for double; integer of the same size and signedness otherwise).
+template <Element T>
+ArrayN<T> read_array(const Location& where, std::string_view name);
+
 /// Reads a whole 1-D dataset. Throws Hdf5Error if it is missing, not 1-D, or its type is not
 /// of T's kind (float for double; integer of the same size and signedness otherwise).
 template <Element T>
@@ -255,7 +268,7 @@ void write_attribute(const Object& obj, std::string_view name, I value) {
     }
     write_attribute(obj, name, static_cast<std::int64_t>(value));
 }
-/// Fixed-length, null-terminated string (see Datatype::fixed_string_for). Throws Hdf5Error
+/// Fixed-length string (see Datatype::fixed_string_for). Throws Hdf5Error
 /// if `value` contains a NUL byte.
 void write_attribute(const Object& obj, std::string_view name, std::string_view value);
 inline void write_attribute(const Object& obj, std::string_view name, const char* value) {
@@ -286,7 +299,9 @@ void make_scale(const Dataset& scale, std::string_view scale_name);
 void attach_scale(const Dataset& data, const Dataset& scale, unsigned dim);
 /// True if `scale` is attached to dimension `dim` of `data`.
 bool is_attached(const Dataset& data, const Dataset& scale, unsigned dim);
-/// Labels dimension `dim` of `data` (shown by h5py's ds.dims[i].label and h5dump).
+/// Labels dimension `dim` of `data` (shown by h5py's ds.dims[i].label and h5dump). The labels
+/// are variable-length strings, on which Octave's netcdf package (ncinfo) fails, so the
+/// spectra and history files carry none.
 void set_dimension_label(const Dataset& data, unsigned dim, std::string_view label);
 
 // ---------------------------------------------------------------------------------------

@@ -1,6 +1,7 @@
 #pragma once
 /// The overturning-spectra HDF5 file: one group per scenario, one [n_amp, n_omega] dataset per
-/// result column, the axes as dimension scales. Layout: docs/hdf5.md.
+/// result column, the group's own copy of the axes as dimension scales (so that netCDF-4 readers
+/// find them). Layout: docs/hdf5.md.
 #include <string>
 
 #include "rocksweep/integrator.hpp"
