@@ -106,6 +106,22 @@ void add_model_options(CLI::App& app, Options& o) {
         ->check(integer_of({1, 4, 8, 16}))->capture_default_str()->group(num);
 }
 
+/// How a command that sweeps runs: its output, resume, progress, chunks, refinement.
+void add_run_options(CLI::App& sub, SweepCommand& cmd) {
+    sub.add_option("-o,--output", cmd.output, "Output HDF5 file")->required();
+    sub.add_flag("--resume", cmd.resume, "Continue the unfinished sweep in the output file");
+    sub.add_flag("--overwrite", cmd.overwrite, "Replace an existing output file");
+    sub.add_flag("-q,--quiet", cmd.quiet, "No progress output");
+    sub.add_option("--chunk", cmd.max_chunk, "Largest chunk of cells handed to a rank")
+        ->check(integer_in(1, 1 << 20))->capture_default_str();
+    sub.add_option("--refine", cmd.refine_stride,
+                   "Boundary refinement: compute every STRIDE-th cell, then only where outcomes differ, "
+                   "halving the spacing down to the full grid (0: compute every cell)")
+        ->check(integer_of({0, 2, 4, 8, 16, 32, 64, 128}))->capture_default_str();
+    sub.add_option("--checkpoint-interval", cmd.checkpoint_s, "Seconds between saves of the finished cells")
+        ->check(number_in(0.1, 86400, "s"))->capture_default_str();
+}
+
 /// A single history is cheap: unless the user chose them, `simulate` takes the accuracy that
 /// makes it a reference-grade history (kHistoryDefaults), not the sweep's. The defaults shown
 /// in the provenance follow, so that replaying it reproduces the history.
@@ -213,18 +229,7 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
     SweepCommand sweep_cmd;
     CLI::App* sweep = app.add_subcommand("sweep", "Overturning spectra over omega_p/p x a_p0/(alpha g) for every scenario");
     sweep->fallthrough();
-    sweep->add_option("-o,--output", sweep_cmd.output, "Output HDF5 file")->required();
-    sweep->add_flag("--resume", sweep_cmd.resume, "Continue the unfinished sweep in the output file");
-    sweep->add_flag("--overwrite", sweep_cmd.overwrite, "Replace an existing output file");
-    sweep->add_flag("-q,--quiet", sweep_cmd.quiet, "No progress output");
-    sweep->add_option("--chunk", sweep_cmd.max_chunk, "Largest chunk of cells handed to a rank")
-        ->check(integer_in(1, 1 << 20))->capture_default_str();
-    sweep->add_option("--refine", sweep_cmd.refine_stride,
-                      "Boundary refinement: compute every STRIDE-th cell, then only where outcomes differ, "
-                      "halving the spacing down to the full grid (0: compute every cell)")
-        ->check(integer_of({0, 2, 4, 8, 16, 32, 64, 128}))->capture_default_str();
-    sweep->add_option("--checkpoint-interval", sweep_cmd.checkpoint_s, "Seconds between saves of the finished cells")
-        ->check(number_in(0.1, 86400, "s"))->capture_default_str();
+    add_run_options(*sweep, sweep_cmd);
 
     std::string sim_output;
     bool sim_quiet = false, sim_overwrite = false;
