@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "rocksweep/config_file.hpp"
+#include "rocksweep/design_command.hpp"
 #include "rocksweep/errors.hpp"
 #include "rocksweep/history.hpp"
 #include "rocksweep/option_checks.hpp"
@@ -269,10 +270,15 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
 
     CLI::App* info = app.add_subcommand("info", "Derived values: alpha, p, e, R, I0, K and F_u per scenario");
     info->fallthrough();
-    for (CLI::App* sub : {sweep, sim, info})
+    DesignCommand design_cmd;
+    CLI::App* design = app.add_subcommand("design", "The constant K and the K_min/K_max that keep most of a pulse region safe");
+    design->fallthrough();
+    add_run_options(*design, design_cmd.run);
+    add_design_options(*design, design_cmd);
+    for (CLI::App* sub : {sweep, sim, info, design})
         sub->footer("Block, pulse, anchorage, grid and numerics options (and --config): rocksweep --help");
 
-    const std::vector<std::string> subcommands{"sweep", "simulate", "info"};
+    const std::vector<std::string> subcommands{"sweep", "simulate", "info", "design"};
     app.config_formatter(std::make_shared<TomlConfig>(subcommands, std::vector<std::string>{"block", "pulse", "anchorage", "grid", "numerics"},
                                                       [config] { return config->as<std::string>(); }));
     const std::vector<std::string> args(argv + (argc > 0 ? 1 : 0), argv + argc);
@@ -280,6 +286,7 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
         app.parse(argc, argv);
         const CLI::App* chosen = app.get_subcommands().at(0);
         check_combinations(app, chosen->get_name(), opts, args);
+        if (*design) check_design_options(app, args);
     } catch (const CLI::Success& e) {  // --help, --help-all, --version: to stdout, once
         if (mpi.is_root()) app.exit(e);
         return 0;
@@ -301,6 +308,7 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
             if (!mpi.is_root()) return 0;  // one history: one rank is enough
             return run_simulate(opts, SimulateCommand{sim_output, sim_quiet, sim_overwrite}, config_text);
         }
+        if (*design) return run_design(opts, design_cmd, config_text, mpi);
         return run_sweep(opts, sweep_cmd, config_text, mpi);
     } catch (const InputError& e) {
         err << "rocksweep: error: " << cli_message(e) << "\n";
