@@ -57,12 +57,14 @@ def stiffness(ratio, a):
 def draw_curve(ax, x, curve, a, colour, unit):
     """Dots, line, near-optimal band, optimum star and free reference of one curve."""
     y = curve["safe_fraction"]
+    shown = [y, [a["free_safe_fraction"]]]
     coarse = curve["round"] == 0
     ax.plot(x, y, color=colour, lw=1.2, zorder=2)
     ax.plot(x[coarse], y[coarse], "o", mfc="white", mec=colour, ms=6, zorder=3, label="coarse round")
     ax.plot(x[~coarse], y[~coarse], "o", color=colour, ms=4, zorder=3, label="refinement rounds")
     if a.get("max_rotation_ratio", 0) > 0 or a.get("max_force_ratio", 0) > 0:
         ax.plot(x, curve["standing_fraction"], color=colour, lw=0.7, ls="-.", label="stays up, limits ignored")
+        shown.append(curve["standing_fraction"])
     lo, hi = curve["attrs"]["near_optimal_range"]
     ax.axvspan(lo, hi, color=colour, alpha=0.12, lw=0,
                label="within {:g} of the best".format(a.get("near_optimal", 0)))
@@ -73,13 +75,13 @@ def draw_curve(ax, x, curve, a, colour, unit):
     ax.axhline(free, color="k", ls="--", lw=1.0, label="free-standing: {:.3f}".format(free))
     ax.set_xscale("log")
     ax.set_ylabel("safe fraction of the hazard region")
-    top = max(float(np.max(y)), free)
-    ax.set_ylim(min(float(np.min(y)), free) - 0.05, top + 0.08)
+    values = np.concatenate([np.ravel(v) for v in shown])
+    ax.set_ylim(float(values.min()) - 0.05, float(values.max()) + 0.08)
 
 
 def plot(D, out):
     a, c, r = D["attrs"], D["constant"], D["adaptive"]
-    fig, (ax_k, ax_r) = plt.subplots(1, 2, figsize=(13, 5.6), layout="constrained")
+    fig, (ax_k, ax_r) = plt.subplots(1, 2, figsize=(13, 6.4), layout="constrained")
 
     k = c["stiffness"]
     draw_curve(ax_k, k, c, a, rsplot.run_colour(0),
@@ -109,7 +111,7 @@ def plot(D, out):
     ax_r.set_title("adaptive, $K_{{max}}$ = {:.3g} kN/m ($\\theta_f$ = ${}$)".format(
         r["attrs"]["k_max_N_per_m"] / 1e3, rsplot.alpha_fraction(r["attrs"].get("k_max_theta_f_ratio", 1))))
     for ax in (ax_k, ax_r):
-        ax.legend(loc="lower center", fontsize=8, ncol=2)
+        ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.13), fontsize=8, ncol=3)
 
     limits = []
     if a.get("max_rotation_ratio", 0) > 0:
