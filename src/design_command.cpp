@@ -46,7 +46,7 @@ void add_design_options(CLI::App& design, DesignCommand& cmd) {
                       "Acceptable only if max |theta| / alpha stays at most this (default: no limit)")
         ->check(number_in(0, 1e3, "", true))->group(grp);
     design.add_option("--object-force-ratio", cmd.object_force_ratio,
-                      "The object's own force limit / (m g): acceptable only if the anchorage's peak force stays below it "
+                      "The object's own force limit / (m g): acceptable only if the anchorage's peak force does not exceed it "
                       "(default: F_u alone)")
         ->check(number_in(0, 1e3, "", true))->group(grp);
     design.add_option("--near-optimal", cmd.near_optimal,
