@@ -12,6 +12,7 @@
 #include <iomanip>
 #include <optional>
 #include <sstream>
+#include <tuple>
 
 #include "rocksweep/design_criterion.hpp"
 #include "rocksweep/design_file.hpp"
@@ -198,11 +199,7 @@ DesignCurve curve_of(std::vector<Evaluation> e, bool with_theta_f, double near_o
         pts.push_back({x.x, x.score.acceptable});
     }
     c.optimum = best_point(pts);
-    // Neighbours as good as the best within the margin: a conservator's room to choose.
-    const double floor = c.acceptable[c.optimum] - near_optimal;
-    c.near_lo = c.near_hi = c.optimum;
-    while (c.near_lo > 0 && c.acceptable[c.near_lo - 1] >= floor) --c.near_lo;
-    while (c.near_hi + 1 < c.acceptable.size() && c.acceptable[c.near_hi + 1] >= floor) ++c.near_hi;
+    std::tie(c.near_lo, c.near_hi) = near_best(pts, c.optimum, near_optimal);
     return c;
 }
 

@@ -34,6 +34,15 @@ std::size_t best_point(const std::vector<SearchPoint>& sorted) {
     return best;
 }
 
+std::pair<std::size_t, std::size_t> near_best(const std::vector<SearchPoint>& sorted, std::size_t best, double margin) {
+    if (best >= sorted.size()) throw std::invalid_argument("near_best: no such point");
+    const double floor = sorted[best].value - margin;
+    std::size_t lo = best, hi = best;
+    while (lo > 0 && sorted[lo - 1].value >= floor) --lo;
+    while (hi + 1 < sorted.size() && sorted[hi + 1].value >= floor) ++hi;
+    return {lo, hi};
+}
+
 BracketSearch::BracketSearch(const SearchSettings& settings) : s_(settings) {
     if (!(std::isfinite(s_.lo) && std::isfinite(s_.hi) && s_.lo < s_.hi))
         throw std::invalid_argument("BracketSearch: the range must be finite with lo < hi");

@@ -114,6 +114,14 @@ TEST(DesignSearch, TiesGoToTheMiddleOfTheWidestRun) {
     EXPECT_EQ(best_point(q), 3u);
 }
 
+TEST(DesignSearch, NearBestRunStopsAtTheFirstValueBelowTheMargin) {
+    std::vector<SearchPoint> p{{0.0, 0.80}, {1.0, 0.896}, {2.0, 0.90}, {3.0, 0.899}, {4.0, 0.70}, {5.0, 0.899}};
+    EXPECT_EQ(near_best(p, 2, 0.005), (std::pair<std::size_t, std::size_t>{1, 3}));
+    EXPECT_EQ(near_best(p, 2, 0.0), (std::pair<std::size_t, std::size_t>{2, 2}));
+    EXPECT_EQ(near_best(p, 2, 1.0), (std::pair<std::size_t, std::size_t>{0, 5}));
+    EXPECT_THROW(near_best(p, 6, 0.1), std::invalid_argument);
+}
+
 TEST(DesignSearch, RefusesSettingsItCannotHonour) {
     EXPECT_THROW(BracketSearch({1.0, 1.0, 9, 2, 4, 0.01}), std::invalid_argument);
     EXPECT_THROW(BracketSearch({2.0, 1.0, 9, 2, 4, 0.01}), std::invalid_argument);

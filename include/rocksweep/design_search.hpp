@@ -9,6 +9,7 @@
 /// maxima. Golden section needs a unimodal function and discards a side of the bracket for
 /// good; bracketing keeps every point evaluated and always refines around the best of them.
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace rocksweep {
@@ -31,6 +32,10 @@ struct SearchPoint {
 /// equal highest values, the middle of the widest run (in x) of neighbouring points that all
 /// hold it, since a variable there keeps its value when the real one is a little off.
 std::size_t best_point(const std::vector<SearchPoint>& sorted);
+
+/// The run of neighbours of `best` in `sorted` whose values are within `margin` of its value:
+/// [first, last] indices, `best` included. A conservator's room to choose.
+std::pair<std::size_t, std::size_t> near_best(const std::vector<SearchPoint>& sorted, std::size_t best, double margin);
 
 class BracketSearch {
 public:
