@@ -16,6 +16,7 @@ std::string to_string(AnchorageKind k) {
 }
 
 std::string to_string(BreakRule r) { return r == BreakRule::angle ? "angle" : "force"; }
+std::string to_string(AdaptiveLaw l) { return l == AdaptiveLaw::paper ? "paper" : "passive"; }
 
 double stiffness_from_strength(const Block& b, double strength_n, double theta_f_rad) {
     return strength_n / (4.0 * b.half_width_m() * std::tan(theta_f_rad / 2.0));
@@ -68,12 +69,13 @@ Anchorage constant_anchorage_k(const Block& b, double strength_n, double k) {
 }
 
 Anchorage adaptive_anchorage(const Block& b, double strength_n, double theta_f_rad, double rho,
-                             BreakRule rule) {
+                             BreakRule rule, AdaptiveLaw law) {
     if (!(rho > 0.0 && rho <= 1.0)) throw InputError("anchorage.kmin_ratio", format_number(rho), "0 < K_min / K_max <= 1");
     Anchorage a = constant_anchorage(b, strength_n, theta_f_rad);
     a.kind = AnchorageKind::adaptive;
     a.k_min = rho * a.k_max;
     a.break_rule = rule;
+    a.law = law;
     return a;
 }
 

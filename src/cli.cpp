@@ -69,6 +69,9 @@ void add_model_options(CLI::App& app, Options& o) {
     app.add_option("--adaptive-break", o.anchorage.break_rule,
                    "Adaptive restrainer breaks at the K_max spring's angle, or when the force reaches F_u")
         ->check(one_of({"angle", "force"}))->capture_default_str()->group(anc);
+    app.add_option("--adaptive-law", o.anchorage.law,
+                   "Adaptive law: paper (Eq. 21-22) | passive (K_min -> K_max only while the spring is slack)")
+        ->check(one_of({"paper", "passive"}))->capture_default_str()->group(anc);
 
     GridOptions& g = o.grid;
     const char* grd = "Sweep grid and scenarios";
@@ -159,7 +162,7 @@ void print_info(const Options& o, std::ostream& out) {
     out << "scenarios\n";
     for (const Scenario& s : spec.scenarios) {
         const Anchorage& a = s.anchorage;
-        out << "  " << std::left << std::setw(22) << s.name << std::right << to_string(a.kind);
+        out << "  " << std::left << std::setw(26) << s.name << std::right << to_string(a.kind);
         if (a.kind != AnchorageKind::free) {
             out << "  F_u = " << a.strength_n << " N, theta_f = " << a.theta_f_rad << " rad (" << s.theta_f_ratio
                 << " alpha), K = " << a.k_max << " N/m";
@@ -231,6 +234,17 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
     CLI::App* sweep = app.add_subcommand("sweep", "Overturning spectra over omega_p/p x a_p0/(alpha g) for every scenario");
     sweep->fallthrough();
     add_run_options(*sweep, sweep_cmd);
+    sweep->add_option("--part", sweep_cmd.part,
+                      "Compute only part K of N of the cells (K/N, a job array's task); join the parts with rocksweep merge");
+
+    MergeCommand merge_cmd;
+    CLI::App* merge = app.add_subcommand("merge", "Join the part files of one sweep (sweep --part K/N) into one file");
+    merge->fallthrough();
+    merge->add_option("parts", merge_cmd.parts, "Part files of the sweep that the config and options describe")
+        ->required()->check(existing_file("a part file"));
+    merge->add_option("-o,--output", merge_cmd.output, "Output HDF5 file")->required();
+    merge->add_flag("--overwrite", merge_cmd.overwrite, "Replace an existing output file");
+    merge->add_flag("-q,--quiet", merge_cmd.quiet, "Print nothing on success");
 
     std::string sim_output;
     bool sim_quiet = false, sim_overwrite = false;
@@ -275,10 +289,10 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
     design->fallthrough();
     add_run_options(*design, design_cmd.run);
     add_design_options(*design, design_cmd);
-    for (CLI::App* sub : {sweep, sim, info, design})
+    for (CLI::App* sub : {sweep, merge, sim, info, design})
         sub->footer("Block, pulse, anchorage, grid and numerics options (and --config): rocksweep --help");
 
-    const std::vector<std::string> subcommands{"sweep", "simulate", "info", "design"};
+    const std::vector<std::string> subcommands{"sweep", "merge", "simulate", "info", "design"};
     app.config_formatter(std::make_shared<TomlConfig>(subcommands, std::vector<std::string>{"block", "pulse", "anchorage", "grid", "numerics"},
                                                       [config] { return config->as<std::string>(); }));
     const std::vector<std::string> args(argv + (argc > 0 ? 1 : 0), argv + argc);
@@ -309,6 +323,10 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
             return run_simulate(opts, SimulateCommand{sim_output, sim_quiet, sim_overwrite}, config_text);
         }
         if (*design) return run_design(opts, design_cmd, config_text, mpi);
+        if (*merge) {
+            if (!mpi.is_root()) return 0;  // reading and writing files: one rank
+            return run_merge(opts, merge_cmd, config_text);
+        }
         return run_sweep(opts, sweep_cmd, config_text, mpi);
     } catch (const InputError& e) {
         err << "rocksweep: error: " << cli_message(e) << "\n";

@@ -388,9 +388,12 @@ private:
 
     /// Switches the adaptive spring. A K_min -> K_max switch at nonzero elongation raises the
     /// spring's potential (that of Eq. 8, physics.md §4) by I0 [V(K_max) - V(K_min)]: the
-    /// paper's law puts that energy into the block, and the histories report it.
+    /// paper's law puts that energy into the block, and the histories report it. The passive
+    /// law never does: the switch waits for theta = 0 (the next impact), where the law is asked
+    /// again.
     void set_kmax(bool kmax) {
         if (kmax && !k_max_ && th_ != 0.0 && intact(side_)) {
+            if (m_.adaptive_law == AdaptiveLaw::passive) return;
             const double phi = std::abs(th_);
             e_switch_ += m_.inertia * (spring_potential(m_, m_.kappa_max, phi) - spring_potential(m_, m_.kappa_min, phi));
         }

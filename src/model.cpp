@@ -72,6 +72,7 @@ CellModel make_cell_model(const Block& block, const Anchorage& a, const Pulse& p
     m.e = block.e;
     m.equations = equations;
     m.anchorage = a.kind;
+    m.adaptive_law = a.law;
     m.pulse = pulse;
     m.mass_kg = block.mass_kg;
     m.radius_m = block.radius_m;

@@ -106,8 +106,9 @@ void check_simulate(const Given& given, const Options& o) {
             throw InputError(std::string(opt).substr(2), given.value(opt),
                              "an option of sweep and info only; simulate takes --omega-ratio, --amplitude-ratio, --anchorage, "
                              "--theta-f-ratio, --kmin-ratio");
-    if (given.source("--adaptive-break") == Source::command_line)
-        only_if(given, "--adaptive-break", s.anchorage == "adaptive", "--anchorage adaptive (here " + a + ")");
+    for (const char* opt : {"--adaptive-break", "--adaptive-law"})
+        if (given.source(opt) == Source::command_line)
+            only_if(given, opt, s.anchorage == "adaptive", "--anchorage adaptive (here " + a + ")");
 }
 
 /// A sweep's per-kind options need their kind among --anchorages, unless --anchorages on the
@@ -124,6 +125,7 @@ void check_sweep_kinds(const Given& given, const Options& o) {
     check("--kmin-ratios", "adaptive");
     check("--adaptive-theta-f-ratio", "adaptive");
     check("--adaptive-break", "adaptive");
+    check("--adaptive-law", "adaptive");
 }
 
 }  // namespace

@@ -84,6 +84,12 @@ BreakRule parse_break_rule(const std::string& s) {
     throw InputError("adaptive-break", s, "one of angle, force");
 }
 
+AdaptiveLaw parse_adaptive_law(const std::string& s) {
+    if (s == "paper") return AdaptiveLaw::paper;
+    if (s == "passive") return AdaptiveLaw::passive;
+    throw InputError("adaptive-law", s, "one of paper, passive");
+}
+
 Axis make_axis(const std::string& name, const std::vector<double>& range, std::size_t points) {
     if (range.size() != 2) throw InputError(name + "-range", std::to_string(range.size()) + " values", "two values LO HI");
     const double lo = range[0], hi = range[1];
@@ -168,6 +174,9 @@ SweepSpec make_sweep_spec(const Options& o) {
     const Block& b = spec.block;
     const double strength = o.anchorage.strength_ratio * b.mass_kg * b.gravity;
     const BreakRule rule = parse_break_rule(o.anchorage.break_rule);
+    const AdaptiveLaw law = parse_adaptive_law(o.anchorage.law);
+    // Another law is another anchorage: its own group, never mistaken for the paper's.
+    const std::string law_suffix = law == AdaptiveLaw::paper ? "" : "_" + to_string(law);
     const std::vector<std::string> tf_names = distinct_tidy(o.grid.theta_f_ratios), rho_names = distinct_tidy(o.grid.kmin_ratios);
     for (const std::string& kind : o.grid.anchorages) {
         if (kind == "free") {
@@ -184,8 +193,8 @@ SweepSpec make_sweep_spec(const Options& o) {
             for (std::size_t i = 0; i < o.grid.kmin_ratios.size(); ++i) {
                 const double rho = o.grid.kmin_ratios[i];
                 const OptionNames names = anchorage_names(b, o.anchorage.strength_ratio, "adaptive-theta-f-ratio", r, "kmin-ratios", rho);
-                spec.scenarios.push_back({"adaptive_rho" + rho_names[i],
-                                          naming_options(names, [&] { return adaptive_anchorage(b, strength, r * b.alpha_rad, rho, rule); }),
+                spec.scenarios.push_back({"adaptive_rho" + rho_names[i] + law_suffix,
+                                          naming_options(names, [&] { return adaptive_anchorage(b, strength, r * b.alpha_rad, rho, rule, law); }),
                                           r, rho});
             }
         } else {
@@ -261,7 +270,8 @@ CellModel make_single_cell(const Options& o) {
             return s.stiffness > 0.0 ? constant_anchorage_k(b, strength, s.stiffness)
                                      : constant_anchorage(b, strength, s.theta_f_ratio * b.alpha_rad);
         if (s.anchorage == "adaptive")
-            return adaptive_anchorage(b, strength, s.theta_f_ratio * b.alpha_rad, s.kmin_ratio, parse_break_rule(o.anchorage.break_rule));
+            return adaptive_anchorage(b, strength, s.theta_f_ratio * b.alpha_rad, s.kmin_ratio, parse_break_rule(o.anchorage.break_rule),
+                                      parse_adaptive_law(o.anchorage.law));
         throw InputError("anchorage", s.anchorage, "one of free, constant, adaptive");
     });
     const CellModel m = make_cell_model(b, a, pulse, parse_equations(o.block.equations), o.numerics.impact_threshold);

@@ -33,7 +33,7 @@ int run_simulate(const Options& o, const SimulateCommand& cmd, const std::string
     } else {
         write_history_h5(output, h,
                          {{"anchorage", o.single.anchorage}, {"pulse", o.single.record.empty() ? o.single.pulse : "record"},
-                          {"record", o.single.record}, {"method", to_string(settings.method)},
+                          {"record", o.single.record}, {"adaptive_law", to_string(m.adaptive_law)}, {"method", to_string(settings.method)},
                           {"equations", to_string(m.equations)}, {"config", config_text}, {"version", ROCKSWEEP_VERSION}},
                          {{"omega_ratio", o.single.omega_ratio}, {"amplitude_ratio", o.single.amplitude_ratio},
                           {"theta_f_ratio", o.single.theta_f_ratio}, {"kmin_ratio", o.single.kmin_ratio},
@@ -47,7 +47,7 @@ int run_simulate(const Options& o, const SimulateCommand& cmd, const std::string
                   << " p alpha; " << r.impacts_total << " in all)\nmax |theta| / alpha: " << r.max_rotation << "\n";
         if (!std::isnan(r.t_overturn_s)) std::cout << "t_overturn: " << r.t_overturn_s << " s\n";
         if (!std::isnan(r.peak_force_ratio)) std::cout << "peak force / F_u: " << r.peak_force_ratio << "\n";
-        if (m.anchorage == AnchorageKind::adaptive)  // the paper's law, physics.md §4
+        if (m.anchorage == AnchorageKind::adaptive)  // 0 under the passive law, physics.md
             std::cout << "spring energy injected by K_min -> K_max switches: " << h.switch_energy_j << " J\n";
         std::cout << "friction needed to rock without sliding: " << r.mu_required;
         if (o.base.friction > 0.0)

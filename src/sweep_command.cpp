@@ -14,6 +14,7 @@
 #include "rocksweep/refine.hpp"
 #include "rocksweep/scheduler.hpp"
 #include "rocksweep/spectra_file.hpp"
+#include "rocksweep/work_part.hpp"
 
 #ifndef ROCKSWEEP_VERSION
 #define ROCKSWEEP_VERSION "unknown"
@@ -81,7 +82,7 @@ struct Start {
 };
 
 void prepare_output(Start& s, const SweepSpec& spec, const IntegratorSettings& settings, const SweepCommand& cmd,
-                    std::ostream& log) {
+                    WorkPart part, std::ostream& log) {
     if (cmd.resume && cmd.overwrite) throw InputError("resume", "with --overwrite", "one of --resume, --overwrite");
     s.claim.emplace("output", cmd.output);
     s.results.resize(spec.cell_count());
@@ -94,7 +95,7 @@ void prepare_output(Start& s, const SweepSpec& spec, const IntegratorSettings& s
     } else if (exists && !cmd.overwrite) {
         throw InputError("output", cmd.output, "a new file; it exists: pass --resume to continue it or --overwrite to replace it");
     }
-    s.todo = missing_ranges(s.results);
+    s.todo = restrict_to_part(missing_ranges(s.results), part);
 }
 
 }  // namespace
@@ -102,6 +103,9 @@ void prepare_output(Start& s, const SweepSpec& spec, const IntegratorSettings& s
 int run_sweep(const Options& opts, const SweepCommand& cmd, const std::string& config_text, const MpiSession& mpi) {
     const SweepSpec spec = make_sweep_spec(opts);  // the same on every rank, so is any error
     IntegratorSettings settings = make_settings(opts.numerics);
+    const WorkPart part = cmd.part.empty() ? WorkPart{} : parse_work_part(cmd.part);
+    if (part.count > 1 && cmd.refine_stride != 0)
+        throw InputError("part", cmd.part, "not with --refine: refinement needs the whole grid between its passes");
     RootStream log(mpi);
     const SignalGuard signals;
 
@@ -111,7 +115,7 @@ int run_sweep(const Options& opts, const SweepCommand& cmd, const std::string& c
     std::string why;
     if (mpi.is_root()) {
         try {
-            prepare_output(start, spec, settings, cmd, log);
+            prepare_output(start, spec, settings, cmd, part, log);
         } catch (const InputError& e) {
             start.claim.reset();  // releases the output before the message
             verdict = 2;
@@ -196,8 +200,9 @@ int run_sweep(const Options& opts, const SweepCommand& cmd, const std::string& c
 
     if (mpi.is_root() && !cmd.quiet) {
         log << "sweep: " << spec.scenarios.size() << " scenarios x " << spec.amplitude_ratio.points << " amplitudes x "
-            << spec.omega_ratio.points << " frequencies = " << total << " cells on " << mpi.size() << " rank(s) -> "
-            << cmd.output << "\n";
+            << spec.omega_ratio.points << " frequencies = " << total << " cells";
+        if (part.count > 1) log << ", part " << part.index << " of " << part.count << ": " << cells_in_part(total, part);
+        log << " on " << mpi.size() << " rank(s) -> " << cmd.output << "\n";
     }
     bool stopped = false;
     if (cmd.refine_stride == 0) {
@@ -231,6 +236,18 @@ int run_sweep(const Options& opts, const SweepCommand& cmd, const std::string& c
         return 1;
     }
     const std::size_t done = results.done_count();
+    if (part.count > 1 && restrict_to_part(missing_ranges(results), part).empty()) {
+        if (!cmd.quiet)
+            log << "wrote part " << part.index << " of " << part.count << " (" << cells_in_part(total, part) << " of "
+                << total << " cells) to " << cmd.output << "; join the parts with rocksweep merge\n";
+        return 0;
+    }
+    if (done < total && part.count > 1) {
+        const int sig = g_signal ? g_signal : SIGINT;
+        log << "stopped by signal " << sig << ": part " << part.index << " of " << part.count << " not finished, "
+            << done << " cells saved in " << cmd.output << "; rerun with --resume to continue\n";
+        return 128 + sig;
+    }
     if (done < total) {
         const int sig = g_signal ? g_signal : SIGINT;
         log << "stopped by signal " << sig << ": " << done << " of " << total << " cells saved in " << cmd.output

@@ -10,9 +10,14 @@ enum class AnchorageKind { free, constant, adaptive };
 /// When an adaptive restrainer breaks: at the K_max spring's fracture angle (default), or when
 /// the force K(t) 4b tan(|theta|/2) reaches F_u.
 enum class BreakRule { angle, force };
+/// Which adaptive law drives K (physics.md, "Anchorage"): the paper's Eq. 21-22, or the passive
+/// variant that makes every K_min -> K_max switch wait until the spring is slack (theta = 0),
+/// so that the controller never puts energy into the spring.
+enum class AdaptiveLaw { paper, passive };
 
 std::string to_string(AnchorageKind k);
 std::string to_string(BreakRule r);
+std::string to_string(AdaptiveLaw l);
 
 /// Stiffness K in N/m (vertical spring at each corner), strength F_u in N, angles in rad.
 struct Anchorage {
@@ -22,6 +27,7 @@ struct Anchorage {
     double strength_n = 0.0;    ///< F_u [N]
     double theta_f_rad = 0.0;   ///< fracture angle of the k_max spring
     BreakRule break_rule = BreakRule::angle;
+    AdaptiveLaw law = AdaptiveLaw::paper;
 
     /// Angle at which a spring of stiffness k breaks under this anchorage's rule.
     double break_angle(double k) const;
@@ -45,6 +51,6 @@ Anchorage constant_anchorage(const Block& b, double strength_n, double theta_f_r
 Anchorage constant_anchorage_k(const Block& b, double strength_n, double k);
 /// Adaptive: K_max from F_u and theta_f, K_min = rho K_max with 0 < rho <= 1.
 Anchorage adaptive_anchorage(const Block& b, double strength_n, double theta_f_rad, double rho,
-                             BreakRule rule = BreakRule::angle);
+                             BreakRule rule = BreakRule::angle, AdaptiveLaw law = AdaptiveLaw::paper);
 
 }  // namespace rocksweep

@@ -1,6 +1,7 @@
 #pragma once
 /// The command line: `rocksweep sweep | simulate | info`, options from flags and TOML files.
 #include <string>
+#include <vector>
 
 #include "rocksweep/mpi_session.hpp"
 #include "rocksweep/options.hpp"
@@ -17,11 +18,22 @@ struct SweepCommand {
     std::size_t max_chunk = 512;
     double checkpoint_s = 5.0;
     std::size_t refine_stride = 0;  ///< 0: every cell; else boundary refinement from this spacing
+    std::string part;  ///< "K/N": compute only part K of N (a job array); empty: every cell
 };
 
 /// Runs a sweep on every rank of `mpi`; rank 0 writes `cmd.output`. Returns the exit status.
 int run_sweep(const Options& opts, const SweepCommand& cmd, const std::string& config_text,
               const MpiSession& mpi);
+
+struct MergeCommand {
+    std::string output;
+    std::vector<std::string> parts;  ///< files of `sweep --part K/N` runs (or any partial runs)
+    bool overwrite = false, quiet = false;
+};
+
+/// Joins the part files of one sweep (the config's) into `cmd.output`, on this rank. Throws
+/// InputError naming the file that is not a part of that sweep, or two parts that disagree.
+int run_merge(const Options& opts, const MergeCommand& cmd, const std::string& config_text);
 
 struct SimulateCommand {
     std::string output;

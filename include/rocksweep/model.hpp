@@ -18,6 +18,7 @@ struct CellModel {
     double e = 1.0;           ///< impact velocity ratio
     Equations equations = Equations::nonlinear;
     AnchorageKind anchorage = AnchorageKind::free;
+    AdaptiveLaw adaptive_law = AdaptiveLaw::paper;
     double kappa_max = 0.0;   ///< constant: kappa of K; adaptive: of K_max
     double kappa_min = 0.0;   ///< adaptive: of K_min; otherwise = kappa_max
     double break_max = 0.0;   ///< fracture angle while K = K_max [rad]

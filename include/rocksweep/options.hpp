@@ -30,6 +30,7 @@ struct BaseOptions {
 struct AnchorageOptions {
     double strength_ratio = 0.4;  ///< F_u / (m g)
     std::string break_rule = "angle";
+    std::string law = "paper";  ///< adaptive law: paper | passive
 };
 
 struct GridOptions {
