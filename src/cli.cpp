@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "rocksweep/config_file.hpp"
+#include "rocksweep/design_command.hpp"
 #include "rocksweep/errors.hpp"
 #include "rocksweep/history.hpp"
 #include "rocksweep/option_checks.hpp"
@@ -107,6 +108,22 @@ void add_model_options(CLI::App& app, Options& o) {
     app.add_flag("--no-energy-stop", n.no_energy_stop, "Integrate every cell to rest instead of deciding by energy")->group(num);
     app.add_option("--lanes", n.lanes, "Cells advanced together in one batch")
         ->check(integer_of({1, 4, 8, 16}))->capture_default_str()->group(num);
+}
+
+/// How a command that sweeps runs: its output, resume, progress, chunks, refinement.
+void add_run_options(CLI::App& sub, SweepCommand& cmd) {
+    sub.add_option("-o,--output", cmd.output, "Output HDF5 file")->required();
+    sub.add_flag("--resume", cmd.resume, "Continue the unfinished sweep in the output file");
+    sub.add_flag("--overwrite", cmd.overwrite, "Replace an existing output file");
+    sub.add_flag("-q,--quiet", cmd.quiet, "No progress output");
+    sub.add_option("--chunk", cmd.max_chunk, "Largest chunk of cells handed to a rank")
+        ->check(integer_in(1, 1 << 20))->capture_default_str();
+    sub.add_option("--refine", cmd.refine_stride,
+                   "Boundary refinement: compute every STRIDE-th cell, then only where outcomes differ, "
+                   "halving the spacing down to the full grid (0: compute every cell)")
+        ->check(integer_of({0, 2, 4, 8, 16, 32, 64, 128}))->capture_default_str();
+    sub.add_option("--checkpoint-interval", cmd.checkpoint_s, "Seconds between saves of the finished cells")
+        ->check(number_in(0.1, 86400, "s"))->capture_default_str();
 }
 
 /// A single history is cheap: unless the user chose them, `simulate` takes the accuracy that
@@ -216,18 +233,7 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
     SweepCommand sweep_cmd;
     CLI::App* sweep = app.add_subcommand("sweep", "Overturning spectra over omega_p/p x a_p0/(alpha g) for every scenario");
     sweep->fallthrough();
-    sweep->add_option("-o,--output", sweep_cmd.output, "Output HDF5 file")->required();
-    sweep->add_flag("--resume", sweep_cmd.resume, "Continue the unfinished sweep in the output file");
-    sweep->add_flag("--overwrite", sweep_cmd.overwrite, "Replace an existing output file");
-    sweep->add_flag("-q,--quiet", sweep_cmd.quiet, "No progress output");
-    sweep->add_option("--chunk", sweep_cmd.max_chunk, "Largest chunk of cells handed to a rank")
-        ->check(integer_in(1, 1 << 20))->capture_default_str();
-    sweep->add_option("--refine", sweep_cmd.refine_stride,
-                      "Boundary refinement: compute every STRIDE-th cell, then only where outcomes differ, "
-                      "halving the spacing down to the full grid (0: compute every cell)")
-        ->check(integer_of({0, 2, 4, 8, 16, 32, 64, 128}))->capture_default_str();
-    sweep->add_option("--checkpoint-interval", sweep_cmd.checkpoint_s, "Seconds between saves of the finished cells")
-        ->check(number_in(0.1, 86400, "s"))->capture_default_str();
+    add_run_options(*sweep, sweep_cmd);
     sweep->add_option("--part", sweep_cmd.part,
                       "Compute only part K of N of the cells (K/N, a job array's task); join the parts with rocksweep merge");
 
@@ -278,10 +284,15 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
 
     CLI::App* info = app.add_subcommand("info", "Derived values: alpha, p, e, R, I0, K and F_u per scenario");
     info->fallthrough();
-    for (CLI::App* sub : {sweep, merge, sim, info})
+    DesignCommand design_cmd;
+    CLI::App* design = app.add_subcommand("design", "The constant K and the K_min/K_max that keep most of a pulse region safe");
+    design->fallthrough();
+    add_run_options(*design, design_cmd.run);
+    add_design_options(*design, design_cmd);
+    for (CLI::App* sub : {sweep, merge, sim, info, design})
         sub->footer("Block, pulse, anchorage, grid and numerics options (and --config): rocksweep --help");
 
-    const std::vector<std::string> subcommands{"sweep", "merge", "simulate", "info"};
+    const std::vector<std::string> subcommands{"sweep", "merge", "simulate", "info", "design"};
     app.config_formatter(std::make_shared<TomlConfig>(subcommands, std::vector<std::string>{"block", "pulse", "anchorage", "grid", "numerics"},
                                                       [config] { return config->as<std::string>(); }));
     const std::vector<std::string> args(argv + (argc > 0 ? 1 : 0), argv + argc);
@@ -289,6 +300,7 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
         app.parse(argc, argv);
         const CLI::App* chosen = app.get_subcommands().at(0);
         check_combinations(app, chosen->get_name(), opts, args);
+        if (*design) check_design_options(app, args);
     } catch (const CLI::Success& e) {  // --help, --help-all, --version: to stdout, once
         if (mpi.is_root()) app.exit(e);
         return 0;
@@ -310,6 +322,7 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
             if (!mpi.is_root()) return 0;  // one history: one rank is enough
             return run_simulate(opts, SimulateCommand{sim_output, sim_quiet, sim_overwrite}, config_text);
         }
+        if (*design) return run_design(opts, design_cmd, config_text, mpi);
         if (*merge) {
             if (!mpi.is_root()) return 0;  // reading and writing files: one rank
             return run_merge(opts, merge_cmd, config_text);
