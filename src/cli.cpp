@@ -50,7 +50,9 @@ void add_model_options(CLI::App& app, Options& o) {
         ->check(one_of({"nonlinear", "linearised", "linearized"}))->capture_default_str()->group(blk);
 
     const char* pul = "Pulse";
-    app.add_option("--phase", o.pulse.phase, "Phase psi of the one-sine pulse [rad]")
+    app.add_option("--cycles", o.pulse.cycles, "n of --pulse n-sine (n full periods) and cycloidal-c (type C_n)")
+        ->check(integer_in(1, 100))->capture_default_str()->group(pul);
+    app.add_option("--phase", o.pulse.phase, "Phase psi of the one-sine and n-sine pulses [rad]")
         ->check(number_in(-2 * M_PI, 2 * M_PI, rad))->capture_default_str()->group(pul);
     app.add_option("--vertical-amplitude", o.pulse.vertical_g, "Vertical pulse amplitude a_v0 / g (same frequency and window)")
         ->check(number_in(-0.99, 0.99, none))->capture_default_str()->group(pul);
@@ -223,6 +225,14 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
                       "Boundary refinement: compute every STRIDE-th cell, then only where outcomes differ, "
                       "halving the spacing down to the full grid (0: compute every cell)")
         ->check(integer_of({0, 2, 4, 8, 16, 32, 64, 128}))->capture_default_str();
+    std::vector<std::string> families = pulse_family_names();
+    sweep->add_option("--pulse", opts.pulse.family,
+                      "Pulse family, a_p its peak ground acceleration (axis a_p / (alpha g)), omega_p = 2 pi / T_p "
+                      "(axis omega_p / p): one-sine a_p sin(omega_p t + psi) on [0, T_p]; n-sine the same on "
+                      "[0, n T_p]; cycloidal-a a_p sin(omega_p t), cycloidal-b a_p cos(omega_p t), both on [0, T_p]; "
+                      "cycloidal-c a_p cos(omega_p t + phi_n) on [0, (n + 1/2 - phi_n / pi) T_p], ground back at rest; "
+                      "rectangle a_p held for T_p / 2 = pi / omega_p [s] (docs/physics.md)")
+        ->check(one_of(families))->capture_default_str();
     sweep->add_option("--checkpoint-interval", sweep_cmd.checkpoint_s, "Seconds between saves of the finished cells")
         ->check(number_in(0.1, 86400, "s"))->capture_default_str();
 
@@ -232,8 +242,11 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
     CLI::App* sim = app.add_subcommand("simulate", "One time history: theta, theta_dot, stiffness, works");
     sim->fallthrough();
     sim->add_option("-o,--output", sim_output, "Output file, .h5 or .csv")->required();
-    sim->add_option("--pulse", so.pulse, "sine | constant")->check(one_of({"sine", "constant"}))->capture_default_str();
-    sim->add_option("--omega-ratio", so.omega_ratio, "omega_p / p of the sine pulse")->check(number_in(1e-3, 1e3, none))->capture_default_str();
+    std::vector<std::string> sim_pulses{"sine", "constant"};
+    sim_pulses.insert(sim_pulses.end(), families.begin(), families.end());
+    sim->add_option("--pulse", so.pulse, "sine (one-sine) | constant (a_p held for --duration) | a family of sweep --pulse")
+        ->check(one_of(sim_pulses))->capture_default_str();
+    sim->add_option("--omega-ratio", so.omega_ratio, "omega_p / p of the pulse")->check(number_in(1e-3, 1e3, none))->capture_default_str();
     sim->add_option("--amplitude-ratio", so.amplitude_ratio, "a_p0 / (alpha g)")->check(number_in(-1e3, 1e3, none))->capture_default_str();
     sim->add_option("--duration", so.duration_s, "Length of the constant pulse [s]")->check(number_in(1e-4, 1e4, "s"));
     sim->add_option("--anchorage", so.anchorage, "free | constant | adaptive")
