@@ -227,11 +227,8 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
         ->check(integer_of({0, 2, 4, 8, 16, 32, 64, 128}))->capture_default_str();
     std::vector<std::string> families = pulse_family_names();
     sweep->add_option("--pulse", opts.pulse.family,
-                      "Pulse family, a_p its peak ground acceleration (axis a_p / (alpha g)), omega_p = 2 pi / T_p "
-                      "(axis omega_p / p): one-sine a_p sin(omega_p t + psi) on [0, T_p]; n-sine the same on "
-                      "[0, n T_p]; cycloidal-a a_p sin(omega_p t), cycloidal-b a_p cos(omega_p t), both on [0, T_p]; "
-                      "cycloidal-c a_p cos(omega_p t + phi_n) on [0, (n + 1/2 - phi_n / pi) T_p], ground back at rest; "
-                      "rectangle a_p held for T_p / 2 = pi / omega_p [s] (docs/physics.md)")
+                      "Pulse family (a_p: peak ground acceleration, axis a_p / (alpha g); T_p = 2 pi / omega_p, axis "
+                      "omega_p / p; n: --cycles; docs/physics.md) -- " + pulse_family_help())
         ->check(one_of(families))->capture_default_str();
     sweep->add_option("--checkpoint-interval", sweep_cmd.checkpoint_s, "Seconds between saves of the finished cells")
         ->check(number_in(0.1, 86400, "s"))->capture_default_str();

@@ -6,9 +6,35 @@
 
 namespace rocksweep {
 
+namespace {
+/// Name and definition of each family, in the order of PulseFamily.
+struct Entry {
+    const char* name;
+    const char* definition;
+};
+constexpr Entry kFamilies[] = {
+    {"one-sine", "a_p sin(omega_p t + psi) on [0, T_p]"},
+    {"n-sine", "a_p sin(omega_p t + psi) on [0, n T_p]"},
+    {"cycloidal-a", "a_p sin(omega_p t) on [0, T_p]"},
+    {"cycloidal-b", "a_p cos(omega_p t) on [0, T_p]"},
+    {"cycloidal-c", "a_p cos(omega_p t + phi_n) on [0, (n + 1/2 - phi_n / pi) T_p], the ground back at rest"},
+    {"rectangle", "a_p held for T_p / 2 = pi / omega_p [s]"},
+};
+}  // namespace
+
 const std::vector<std::string>& pulse_family_names() {
-    static const std::vector<std::string> names{"one-sine", "n-sine", "cycloidal-a", "cycloidal-b", "cycloidal-c", "rectangle"};
+    static const std::vector<std::string> names = [] {
+        std::vector<std::string> v;
+        for (const Entry& e : kFamilies) v.push_back(e.name);
+        return v;
+    }();
     return names;
+}
+
+std::string pulse_family_help() {
+    std::string out;
+    for (const Entry& e : kFamilies) out += std::string(out.empty() ? "" : "; ") + e.name + ": " + e.definition;
+    return out;
 }
 
 std::string to_string(PulseFamily f) { return pulse_family_names().at(static_cast<std::size_t>(f)); }

@@ -21,6 +21,8 @@ enum class PulseFamily {
 std::string to_string(PulseFamily f);
 /// The names, in the order of PulseFamily, for --help and messages.
 const std::vector<std::string>& pulse_family_names();
+/// Each family's name and definition, for --help.
+std::string pulse_family_help();
 /// Throws InputError(option, text, allowed) for a name that is none of pulse_family_names().
 PulseFamily parse_pulse_family(const std::string& option, const std::string& text);
 /// Whether the family takes a number of cycles n (n-sine, cycloidal-c), a phase psi and a
