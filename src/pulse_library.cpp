@@ -19,6 +19,7 @@ constexpr Entry kFamilies[] = {
     {"cycloidal-b", "a_p cos(omega_p t) on [0, T_p]"},
     {"cycloidal-c", "a_p cos(omega_p t + phi_n) on [0, (n + 1/2 - phi_n / pi) T_p], the ground back at rest"},
     {"rectangle", "a_p held for T_p / 2 = pi / omega_p [s]"},
+    {"ricker", "a_p (1 - 2 pi^2 tau^2 / T_p^2) exp(-pi^2 tau^2 / T_p^2), tau = t - 1.5 T_p, on [0, 3 T_p]"},
 };
 }  // namespace
 
@@ -91,6 +92,7 @@ Pulse make_pulse(const PulseShape& s, double a_g, double omega) {
             p.kind = PulseKind::constant;
             p.duration_s = M_PI / omega;
             break;
+        case PulseFamily::ricker: p.kind = PulseKind::ricker; break;
     }
     return p;
 }

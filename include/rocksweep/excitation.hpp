@@ -17,15 +17,16 @@
 #include "rocksweep/excitation/harmonic.hpp"
 #include "rocksweep/excitation/recorded.hpp"
 #include "rocksweep/excitation/rectangle.hpp"
+#include "rocksweep/excitation/ricker.hpp"
 
 namespace rocksweep {
 
-enum class PulseKind { sine, constant, record };
+enum class PulseKind { sine, constant, record, ricker };
 
 /// One ground motion. sine: a_p0 sin(omega t + psi) on [0, periods 2 pi / omega] with an
 /// optional vertical a_v0 sin(omega t + psi_v) over the same window (Harmonic); constant:
 /// Housner's a_p0 held for `duration_s` (Rectangle); record: samples in g at a fixed interval,
-/// linear between samples (Recorded).
+/// linear between samples (Recorded); ricker: the Ricker wavelet of peak a_p0 and omega (Ricker).
 struct Pulse {
     PulseKind kind = PulseKind::sine;
     double ax_g = 0.0;          ///< horizontal amplitude a_p0 / g
@@ -72,6 +73,7 @@ decltype(auto) visit(const Pulse& p, F&& f) {
         case PulseKind::sine: return f(Harmonic{p.ax_g, p.omega, p.phase, p.ay_g, p.phase_y, p.periods});
         case PulseKind::constant: return f(Rectangle{p.ax_g, p.duration_s});
         case PulseKind::record: return f(Recorded{p.record.get(), p.record_dt_s});
+        case PulseKind::ricker: return f(Ricker{p.ax_g, p.omega});
     }
     return f(Rectangle{0.0, 0.0});  // not reached: every kind has its case
 }

@@ -15,6 +15,7 @@ enum class PulseFamily {
     cycloidal_b,  ///< a_p cos(omega_p t) on [0, T_p]
     cycloidal_c,  ///< a_p cos(omega_p t + phi_n) on [0, (n + 1/2 - phi_n / pi) T_p]
     rectangle,    ///< Housner's a_p held for T_p / 2 = pi / omega_p
+    ricker,       ///< a_p (1 - 2 pi^2 tau^2 / T_p^2) exp(-pi^2 tau^2 / T_p^2), tau = t - 1.5 T_p, on [0, 3 T_p]
 };
 
 /// The family's name on the command line and in output files ("one-sine", "n-sine", ...).
