@@ -3,6 +3,7 @@
 // forms where the linearised response has one.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -203,4 +204,56 @@ TEST(Excitation, RectangleInASweepOverturnsOnHousnersClosedForm) {
         EXPECT_EQ(r[0].outcome, Outcome::overturned_no_impact) << A;  // lower frequency: longer pulse
         EXPECT_EQ(r[1].outcome, Outcome::safe) << A;
     }
+}
+
+TEST(Excitation, OneSineMode2MatchesTheLinearisedClosedForm) {
+    // Linearised, free, one-sine a_p = A alpha g: the block lifts at sin(omega t_u) = 1 / A to
+    // theta < 0; with phi = -theta, phi'' = p^2 (phi - alpha) + p^2 A alpha sin(omega t), so
+    // phi = alpha + K sin(omega t) + c1 cosh(p (t - t_u)) + c2 sinh(p (t - t_u)),
+    // K = -p^2 A alpha / (p^2 + omega^2), c1 = -alpha - K sin(omega t_u), c2 = -K omega cos(omega t_u) / p.
+    // After the pulse phi - alpha = D+ e^(p (t - T)) + D- e^(-p (t - T)): mode 2 iff phi stays
+    // above 0 on (t_u, T] and either reaches pi/2 there or D+ = (phi - alpha + phi' / p) / 2 > 0
+    // at T. Cells within 1e-3 alpha of either boundary (min phi, D+), or whose phi stays below
+    // 1e-2 alpha, are not judged; phi(T) is compared to 1e-5 rad (48 steps per period: up to
+    // 2e-6 seen).
+    const double p = kBlock.p(), alpha = kBlock.alpha_rad;
+    int judged = 0, mode2 = 0;
+    for (double wr = 1.0; wr <= 10.0; wr += 0.75)
+        for (double A = 1.1; A <= 20.0; A *= 1.35) {
+            const double w = wr * p, T = 2 * M_PI / w, tu = std::asin(1.0 / A) / w;
+            const double K = -p * p * A * alpha / (p * p + w * w);
+            const double c1 = -alpha - K * std::sin(w * tu), c2 = -K * w * std::cos(w * tu) / p;
+            auto phi = [&](double t) { return alpha + K * std::sin(w * t) + c1 * std::cosh(p * (t - tu)) + c2 * std::sinh(p * (t - tu)); };
+            auto phi_dot = [&](double t) {
+                return K * w * std::cos(w * t) + p * (c1 * std::sinh(p * (t - tu)) + c2 * std::cosh(p * (t - tu)));
+            };
+            // The lowest phi once it has risen past 1e-2 alpha: a return to 0 is an impact.
+            double lowest = INFINITY, highest = 0.0;
+            for (int i = 1; i <= 4000; ++i) {
+                const double f = phi(tu + (T - tu) * i / 4000.0);
+                if (highest > 1e-2 * alpha) lowest = std::min(lowest, f);
+                highest = std::max(highest, f);
+            }
+            const bool falls = highest >= M_PI / 2;
+            const double d_plus = 0.5 * (phi(T) - alpha + phi_dot(T) / p);
+            if (highest <= 1e-2 * alpha) continue;  // barely lifts: not judged
+            if (!falls && (std::abs(lowest) < 1e-3 * alpha || std::abs(d_plus) < 1e-3 * alpha)) continue;
+            const bool expect2 = lowest > 0.0 && (falls || d_plus > 0.0);
+            const CellModel m = make_cell_model(kBlock, free_anchorage(), pulse(PulseFamily::one_sine, wr, A), Equations::linearised);
+            const CellResult r = integrate_cell(m, IntegratorSettings{});
+            EXPECT_EQ(r.outcome == Outcome::overturned_no_impact, expect2) << "omega_p/p " << wr << " A " << A;
+            ++judged;
+            mode2 += expect2;
+            if (lowest > 0.0 && !falls) {
+                IntegratorSettings s;
+                s.t_end_s = T;
+                s.energy_stop = false;
+                double theta_T = NAN;
+                integrate_cell(m, s, [&](const StepRecord& rec) { theta_T = rec.theta1; });
+                EXPECT_NEAR(-theta_T, phi(T), 1e-5) << "omega_p/p " << wr << " A " << A;
+            }
+        }
+    EXPECT_GT(judged, 100);
+    EXPECT_GT(mode2, 10);
+    EXPECT_LT(mode2, judged - 10);
 }
