@@ -17,8 +17,11 @@ public:
 
     const CLI::Option* option(const std::string& name) const {
         if (const CLI::Option* o = app_.get_option_no_throw(name)) return o;
-        for (const CLI::App* sub : app_.get_subcommands([](const CLI::App*) { return true; }))
-            if (const CLI::Option* o = sub->get_option_no_throw(name)) return o;
+        // The command's own first: sweep and simulate each have a --pulse.
+        for (bool parsed : {true, false})
+            for (const CLI::App* sub : app_.get_subcommands([](const CLI::App*) { return true; }))
+                if (sub->parsed() == parsed)
+                    if (const CLI::Option* o = sub->get_option_no_throw(name)) return o;
         return nullptr;
     }
     Source source(const std::string& name) const {
