@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # pulse_seam.sh REV: the excitation seam against the build of REV (e.g. the commit before it).
 #  1. bitwise: configs/smatteo.toml (267 337 cells, one rank) with both builds, h5diff of the
-#     result datasets (everything but /provenance);
+#     result datasets (/spectra and /axes; the root gained the attributes pulse, pulse_cycles);
 #  2. instructions: callgrind on the reduced sweep (46 x 53 grid) with both builds, side by side
 #     in one run, and their ratio (wall time is noisy on a shared machine; instruction counts
 #     are not).
@@ -18,11 +18,13 @@ fi
 full=(sweep --config configs/smatteo.toml --quiet --overwrite)
 "$old/rocksweep" "${full[@]}" -o "$out/seam_old.h5"
 build/rocksweep "${full[@]}" -o "$out/seam_new.h5"
-if h5diff --exclude-path /provenance "$out/seam_old.h5" "$out/seam_new.h5" >/dev/null 2>&1; then
-  echo "configs/smatteo.toml result datasets: bitwise equal"
-else
-  echo "configs/smatteo.toml result datasets: DIFFER (h5diff --exclude-path /provenance $out/seam_old.h5 $out/seam_new.h5)"
-fi
+for g in /spectra /axes; do
+  if h5diff "$out/seam_old.h5" "$out/seam_new.h5" "$g" "$g" >/dev/null 2>&1; then
+    echo "configs/smatteo.toml $g: bitwise equal"
+  else
+    echo "configs/smatteo.toml $g: DIFFER (h5diff $out/seam_old.h5 $out/seam_new.h5 $g $g)"
+  fi
+done
 reduced=(sweep --config configs/smatteo.toml --omega-ratio-points 46 --amplitude-ratio-points 53 --quiet --overwrite)
 count() { valgrind --tool=callgrind --callgrind-out-file=/dev/null "$@" 2>&1 | awk '/Collected/ {print $4}'; }
 n_old=$(count "$old/rocksweep" "${reduced[@]}" -o "$out/seam_cg_old.h5")
