@@ -51,7 +51,9 @@ void add_model_options(CLI::App& app, Options& o) {
         ->check(one_of({"nonlinear", "linearised", "linearized"}))->capture_default_str()->group(blk);
 
     const char* pul = "Pulse";
-    app.add_option("--phase", o.pulse.phase, "Phase psi of the one-sine pulse [rad]")
+    app.add_option("--cycles", o.pulse.cycles, "n of --pulse n-sine (n full periods) and cycloidal-c (type C_n)")
+        ->check(integer_in(1, 100))->capture_default_str()->group(pul);
+    app.add_option("--phase", o.pulse.phase, "Phase psi of the one-sine and n-sine pulses [rad]")
         ->check(number_in(-2 * M_PI, 2 * M_PI, rad))->capture_default_str()->group(pul);
     app.add_option("--vertical-amplitude", o.pulse.vertical_g, "Vertical pulse amplitude a_v0 / g (same frequency and window)")
         ->check(number_in(-0.99, 0.99, none))->capture_default_str()->group(pul);
@@ -234,6 +236,15 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
     CLI::App* sweep = app.add_subcommand("sweep", "Overturning spectra over omega_p/p x a_p0/(alpha g) for every scenario");
     sweep->fallthrough();
     add_run_options(*sweep, sweep_cmd);
+    // The family shapes every cell: merge takes it too, to check its parts against it.
+    const std::vector<std::string> families = pulse_family_names();
+    const auto add_family_option = [&](CLI::App& sub) {
+        sub.add_option("--pulse", opts.pulse.family,
+                       "Pulse family (a_p: peak ground acceleration, axis a_p / (alpha g); T_p = 2 pi / omega_p, axis "
+                       "omega_p / p; n: --cycles; docs/physics.md) -- " + pulse_family_help())
+            ->check(one_of(families))->capture_default_str();
+    };
+    add_family_option(*sweep);
     sweep->add_option("--part", sweep_cmd.part,
                       "Compute only part K of N of the cells (K/N, a job array's task); join the parts with rocksweep merge");
 
@@ -245,6 +256,7 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
     merge->add_option("-o,--output", merge_cmd.output, "Output HDF5 file")->required();
     merge->add_flag("--overwrite", merge_cmd.overwrite, "Replace an existing output file");
     merge->add_flag("-q,--quiet", merge_cmd.quiet, "Print nothing on success");
+    add_family_option(*merge);
 
     std::string sim_output;
     bool sim_quiet = false, sim_overwrite = false;
@@ -252,8 +264,11 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
     CLI::App* sim = app.add_subcommand("simulate", "One time history: theta, theta_dot, stiffness, works");
     sim->fallthrough();
     sim->add_option("-o,--output", sim_output, "Output file, .h5 or .csv")->required();
-    sim->add_option("--pulse", so.pulse, "sine | constant")->check(one_of({"sine", "constant"}))->capture_default_str();
-    sim->add_option("--omega-ratio", so.omega_ratio, "omega_p / p of the sine pulse")->check(number_in(1e-3, 1e3, none))->capture_default_str();
+    std::vector<std::string> sim_pulses{"sine", "constant"};
+    sim_pulses.insert(sim_pulses.end(), families.begin(), families.end());
+    sim->add_option("--pulse", so.pulse, "sine (one-sine) | constant (a_p held for --duration) | a family of sweep --pulse")
+        ->check(one_of(sim_pulses))->capture_default_str();
+    sim->add_option("--omega-ratio", so.omega_ratio, "omega_p / p of the pulse")->check(number_in(1e-3, 1e3, none))->capture_default_str();
     sim->add_option("--amplitude-ratio", so.amplitude_ratio, "a_p0 / (alpha g)")->check(number_in(-1e3, 1e3, none))->capture_default_str();
     sim->add_option("--duration", so.duration_s, "Length of the constant pulse [s]")->check(number_in(1e-4, 1e4, "s"));
     sim->add_option("--anchorage", so.anchorage, "free | constant | adaptive")

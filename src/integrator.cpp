@@ -10,7 +10,7 @@
 #include <stdexcept>
 
 #include "rocksweep/energy.hpp"
-#include "rocksweep/fastmath.hpp"
+#include "batch.hpp"
 
 namespace rocksweep {
 
@@ -30,181 +30,8 @@ namespace {
 
 constexpr double kHalfPi = M_PI / 2;
 
-/// Ground acceleration / g at time t: (horizontal, vertical).
-struct Ground {
-    double ax = 0.0, ay = 0.0;
-};
-
-// ---- The lane arithmetic, branch-free: selects are written as exact arithmetic on 0/1 factors
-// (x * 1 = x, x * 0 + y = y for finite x and y != 0), so that GCC vectorises the lane loop
-// (a ternary between computed values would put the sin/cos under a branch) and a lane gives the
-// same bits whether it runs alone or in a vector. Values that the scalar code set to 0.0 are
-// made exactly +0.0 by adding +0.0. sin/cos: rocksweep::fastmath (odd/even bitwise).
-
-/// Coefficients of one lane as doubles (side +-1, flags 0/1), as the vector loop wants them.
-struct LaneCoef {
-    double p2, alpha, kappa, ax_g, ay_g, omega, phase, phase_y, side, sine, linear, spring;
-};
-
-/// Horizontal (and, if with_y, vertical) ground acceleration / g at time t; `in` is 1 inside
-/// the pulse (t < t_cut), 0 outside, where the result is +0.
-template <bool with_y>
-[[gnu::always_inline]] inline Ground ground(const LaneCoef& c, double t, double in) {
-    Ground g;
-    // Outside the pulse the argument is 0, whatever t is: the kernel stays in its range.
-    const double sx = fastmath::sin((c.omega * t + c.phase) * in);
-    const double fx = c.sine * sx + (1.0 - c.sine);  // sine: sin(..); constant: 1
-    g.ax = (c.ax_g * fx) * in + 0.0;
-    if constexpr (with_y) {
-        const double sy = fastmath::sin((c.omega * t + c.phase_y) * in);
-        g.ay = ((c.ay_g * sy) * c.sine) * in + 0.0;  // ay_g = 0: +0, as the scalar code
-    }
-    return g;
-}
-
-/// theta'' on side s (physics.md §3, Eq. 7 and 9 with the restoring factor s):
-/// -p^2 [(1 + ay) sin(s alpha - theta) + ax cos(s alpha - theta)] - s kappa sin(s theta / 2).
-/// Written on s theta rather than |theta| so that a trial step just past theta = 0 stays smooth.
-template <bool with_spring = true>
-[[gnu::always_inline]] inline double rhs(const LaneCoef& c, const Ground& g, double theta) {
-    const double s = c.side;
-    const double a = s * c.alpha - theta;
-    const double nl = 1.0 - c.linear;
-    double sa, ca;
-    fastmath::sincos(a, sa, ca);
-    const double sn = a * c.linear + sa * nl;
-    const double cs = c.linear + ca * nl;
-    double spring = 0.0;  // kappa = 0: +0, as the scalar code
-    if constexpr (with_spring) {
-        const double h = 0.5 * s * theta;
-        const double sp = h * c.linear + fastmath::sin(h) * nl;
-        spring = sp * c.spring + 0.0;
-    }
-    return -c.p2 * ((1.0 + g.ay) * sn + g.ax * cs) - s * c.kappa * spring;
-}
-
-/// Per-lane coefficients of the right-hand side, constant over one step (as Lane writes them).
-struct RhsLane {
-    double p2, alpha, kappa, ax_g, ay_g, omega, phase, phase_y;
-    double t_cut;  ///< ground moves at stage times t < t_cut
-    int side;
-    bool sine, linear;
-    const Pulse* record = nullptr;  ///< a recorded ground motion: read, not vectorised
-};
-
-inline LaneCoef coef(const RhsLane& l) {
-    return {l.p2, l.alpha, l.kappa, l.ax_g, l.ay_g, l.omega, l.phase, l.phase_y, static_cast<double>(l.side),
-            l.sine ? 1.0 : 0.0, l.linear ? 1.0 : 0.0, l.kappa == 0.0 ? 0.0 : 1.0};
-}
-
-/// One classical RK4 step per lane; y = (theta, theta_dot). The lane loop is branch-free
-/// and vectorised; every lane computes the same operation sequence as W = 1.
-template <int W>
-struct Batch {
-    std::array<RhsLane, W> c{};  ///< written by Lane::prepare
-    std::array<double, W> t0{}, y0{}, v0{}, dt{}, y1{}, v1{}, a0{};
-
-    /// The coefficients as structure of arrays, and the in-pulse factors of the stage times.
-    struct Soa {
-        alignas(64) double p2[W], alpha[W], kappa[W], ax_g[W], ay_g[W], omega[W], phase[W], phase_y[W],
-            side[W], sine[W], linear[W], spring[W], in0[W], inm[W], in1[W];
-    } k{};
-
-    /// Batch-uniform shortcuts, which give the same bits per lane as the full computation:
-    /// no lane in the pulse (every ground value +0), no lane with a vertical component (ay +0),
-    /// no lane with a spring (spring term +0).
-    void step() {
-        bool any_in = false, any_y = false, any_k = false, any_record = false;
-        for (int i = 0; i < W; ++i) {
-            const LaneCoef l = coef(c[i]);
-            k.p2[i] = l.p2; k.alpha[i] = l.alpha; k.kappa[i] = l.kappa; k.ax_g[i] = l.ax_g;
-            k.ay_g[i] = l.ay_g; k.omega[i] = l.omega; k.phase[i] = l.phase; k.phase_y[i] = l.phase_y;
-            k.side[i] = l.side; k.sine[i] = l.sine; k.linear[i] = l.linear; k.spring[i] = l.spring;
-            const double h = dt[i], t = t0[i];
-            k.in0[i] = t < c[i].t_cut ? 1.0 : 0.0;
-            k.inm[i] = t + 0.5 * h < c[i].t_cut ? 1.0 : 0.0;
-            k.in1[i] = t + h < c[i].t_cut ? 1.0 : 0.0;
-            any_in |= t < c[i].t_cut;  // dt >= 0: the later stage times are not earlier
-            any_y |= c[i].ay_g != 0.0 && c[i].sine;
-            any_k |= c[i].kappa != 0.0;
-            any_record |= c[i].record != nullptr;
-        }
-        if (any_record) return lanes<true, true, true, true>(*this);
-        const int variant = (any_in ? 1 : 0) + (any_in && any_y ? 2 : 0) + (any_k ? 4 : 0);
-        // Same operations either way (AVX2 without FMA, -ffp-contract=off): same bits.
-        if (use_avx2()) {
-            switch (variant) {
-                case 0: return lanes_avx2<false, false, false>(*this);
-                case 1: return lanes_avx2<true, false, false>(*this);
-                case 3: return lanes_avx2<true, true, false>(*this);
-                case 4: return lanes_avx2<false, false, true>(*this);
-                case 5: return lanes_avx2<true, false, true>(*this);
-                default: return lanes_avx2<true, true, true>(*this);
-            }
-        }
-        switch (variant) {
-            case 0: return lanes<false, false, false>(*this);
-            case 1: return lanes<true, false, false>(*this);
-            case 3: return lanes<true, true, false>(*this);
-            case 4: return lanes<false, false, true>(*this);
-            case 5: return lanes<true, false, true>(*this);
-            default: return lanes<true, true, true>(*this);
-        }
-    }
-
-    static bool use_avx2() {
-#if defined(__x86_64__) || defined(__i386__)
-        static const bool yes = W > 1 && __builtin_cpu_supports("avx2") && !std::getenv("ROCKSWEEP_NO_AVX2");
-        return yes;
-#else
-        return false;
-#endif
-    }
-
-    template <bool pulse, bool with_y, bool spring, bool recorded = false>
-    [[gnu::always_inline]] static inline void lanes_body(Batch& b) {
-        for (int i = 0; i < W; ++i) {
-            const LaneCoef l{b.k.p2[i], b.k.alpha[i], b.k.kappa[i], b.k.ax_g[i], b.k.ay_g[i], b.k.omega[i],
-                             b.k.phase[i], b.k.phase_y[i], b.k.side[i], b.k.sine[i], b.k.linear[i], b.k.spring[i]};
-            const double h = b.dt[i], t = b.t0[i], y = b.y0[i], v = b.v0[i];
-            // The ground at t, t + h/2 (shared by k2 and k3) and t + h.
-            Ground g0, gm, g1;
-            if constexpr (pulse) {
-                g0 = ground<with_y>(l, t, b.k.in0[i]);
-                gm = ground<with_y>(l, t + 0.5 * h, b.k.inm[i]);
-                g1 = ground<with_y>(l, t + h, b.k.in1[i]);
-            }
-            if constexpr (recorded) {
-                if (const Pulse* r = b.c[i].record) {
-                    g0 = Ground{b.k.in0[i] != 0.0 ? r->ax(t) : 0.0, 0.0};
-                    gm = Ground{b.k.inm[i] != 0.0 ? r->ax(t + 0.5 * h) : 0.0, 0.0};
-                    g1 = Ground{b.k.in1[i] != 0.0 ? r->ax(t + h) : 0.0, 0.0};
-                }
-            }
-            // k1 = f(t, y)
-            const double k1y = v, k1v = rhs<spring>(l, g0, y);
-            // k2 = f(t + h/2, y + h/2 k1)
-            const double k2y = v + 0.5 * h * k1v, k2v = rhs<spring>(l, gm, y + 0.5 * h * k1y);
-            // k3 = f(t + h/2, y + h/2 k2)
-            const double k3y = v + 0.5 * h * k2v, k3v = rhs<spring>(l, gm, y + 0.5 * h * k2y);
-            // k4 = f(t + h, y + h k3)
-            const double k4y = v + h * k3v, k4v = rhs<spring>(l, g1, y + h * k3y);
-            b.y1[i] = y + h / 6.0 * (k1y + 2.0 * k2y + 2.0 * k3y + k4y);
-            b.v1[i] = v + h / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
-            b.a0[i] = k1v;
-        }
-    }
-    template <bool pulse, bool with_y, bool spring, bool recorded = false>
-    static void lanes(Batch& b) { lanes_body<pulse, with_y, spring, recorded>(b); }
-    // The same loop compiled for AVX2 (no FMA: the bits stay those of the baseline build).
-#if defined(__x86_64__) || defined(__i386__)
-    template <bool pulse, bool with_y, bool spring>
-    __attribute__((target("avx2"))) static void lanes_avx2(Batch& b) { lanes_body<pulse, with_y, spring>(b); }
-#else
-    template <bool pulse, bool with_y, bool spring>
-    static void lanes_avx2(Batch& b) { lanes_body<pulse, with_y, spring>(b); }
-#endif
-};
+using kernel::Batch;
+using kernel::RhsLane;
 
 enum class Event { none, overturn, fracture, impact, turn };
 
@@ -243,6 +70,7 @@ public:
     Lane(const CellModel& m, const IntegratorSettings& s, const StepObserver* obs)
         : m_(m), set_(s), obs_(obs) {
         t_pulse_end_ = m.pulse.end_time();
+        ground_ = visit(m.pulse, [](const auto& e) { return e.lane_coefficients(); });
         h_ = set_.method == Method::paper ? set_.paper_dt_s
                                           : 2.0 * M_PI / (m.omega_max() * set_.steps_per_period);
         r_.t_overturn_s = NAN;
@@ -273,14 +101,8 @@ public:
         c.p2 = m_.p2;
         c.alpha = m_.alpha;
         c.kappa = kappa();
-        c.ax_g = m_.pulse.ax_g;
-        c.ay_g = m_.pulse.ay_g;
-        c.omega = m_.pulse.omega;
-        c.phase = m_.pulse.phase;
-        c.phase_y = m_.pulse.phase_y;
-        c.sine = m_.pulse.kind == PulseKind::sine;
-        c.record = m_.pulse.kind == PulseKind::record ? &m_.pulse : nullptr;
-        if (c.record) c.ax_g = 0.0;
+        c.pulse = &m_.pulse;
+        c.ground = ground_;
         c.linear = m_.equations == Equations::linearised;
         c.side = side_;
         b.t0[i] = t_;
@@ -322,6 +144,7 @@ private:
     bool k_max_ = true;                ///< adaptive: K = K_max now
     bool done_ = false;
     double t_pulse_end_, h_;
+    GroundLane ground_;  ///< the pulse's coefficients in the lane loop
     double boundary_ = INFINITY;
     bool clipped_ = false;
     // event search on the current step: the root lies in (lo, hi]
@@ -360,9 +183,9 @@ private:
         if (in_pulse()) {
             b = std::min(b, t_pulse_end_);
             if (m_.anchorage == AnchorageKind::adaptive) b = std::min(b, m_.pulse.next_ax_zero(t_));
-            // A record is linear between samples: its kinks are steps' ends, so the error
+            // Where the ground stops being smooth (a record's samples) steps end, so the error
             // stays that of a smooth right-hand side.
-            if (m_.pulse.kind == PulseKind::record) b = std::min(b, m_.pulse.next_sample(t_));
+            b = std::min(b, m_.pulse.next_kink(t_));
         }
         return b;
     }
@@ -437,26 +260,18 @@ private:
     }
 
     /// At rest on the moving ground the base carries m (g + ay) and m ax: the friction needed is
-    /// max |ax| / (1 + ay) over [t0, t1] of the pulse, sampled like the uplift search (and at
-    /// the peaks of |ax|, where it is largest without vertical motion).
+    /// max |ax| / (1 + ay) over [t0, t1] of the pulse, taken at its ends and where the pulse
+    /// says |ax| may peak (and on its scan with a vertical component).
     void note_rest_demand(double t0, double t1) {
         t1 = std::min(t1, t_pulse_end_);
         if (!(t1 >= t0)) return;
         auto demand = [&](double t) { return std::abs(m_.pulse.ax(t)) / (1.0 + m_.pulse.ay(t)); };
         mu_ = std::max({mu_, demand(t0), demand(t1 < t_pulse_end_ ? t1 : std::nextafter(t1, t0))});
-        if (m_.pulse.kind == PulseKind::record) {  // linear between samples: the samples bound it
-            for (double t = m_.pulse.next_sample(t0); t < t1 && charge(); t = m_.pulse.next_sample(t)) mu_ = std::max(mu_, demand(t));
-            return;
-        }
-        if (m_.pulse.kind != PulseKind::sine) return;
-        const double w = m_.pulse.omega, ph = m_.pulse.phase, period = 2.0 * M_PI / w;
-        for (double k = std::ceil(((w * t0 + ph) - M_PI / 2) / M_PI);; k += 1.0) {
-            const double tpk = ((M_PI / 2 + k * M_PI) - ph) / w;
-            if (!(tpk < t1) || !charge()) break;  // NaN (omega_p overflowed) ends it too
-            if (tpk > t0) mu_ = std::max(mu_, demand(tpk));
-        }
-        if (m_.pulse.ay_g != 0.0)
-            for (double t = t0; t < t1 && charge(); t += period / 512.0) mu_ = std::max(mu_, demand(t));
+        m_.pulse.demand_points(t0, t1, [&](double t) {
+            if (!charge()) return false;
+            if (t > t0) mu_ = std::max(mu_, demand(t));
+            return true;
+        });
     }
 
     /// One ground sample scanned outside the RK4 steps (uplift search, friction demand at rest),
@@ -493,44 +308,11 @@ private:
         k_max_ = true;  // at uplift ax theta < 0: the adaptive law's K_max
     }
 
-    /// The uplift instant in (lo, hi], hi uplifting and lo not, to machine precision.
-    double bisect_uplift(double lo, double hi) const {
-        for (int i = 0; i < 200 && hi - lo > 4 * DBL_EPSILON * hi; ++i) {
-            const double mid = 0.5 * (lo + hi);
-            (m_.uplifts(mid) ? hi : lo) = mid;
-        }
-        return hi;
-    }
-
     /// First time in [t, t_stop) at which the block uplifts, or +inf.
     double next_uplift(double t, double t_stop) {
         if (m_.uplifts(t)) return t;
         if (m_.never_uplifts()) return INFINITY;  // decided without integrating
-        if (m_.pulse.kind == PulseKind::constant) return INFINITY;  // constant ground: no change
-        if (m_.pulse.kind == PulseKind::record) {
-            // |ax| is largest at a segment's ends: the first sample that uplifts brackets it.
-            for (double prev = t, next = m_.pulse.next_sample(t); prev < t_stop; prev = next, next = m_.pulse.next_sample(next)) {
-                if (!charge()) return INFINITY;
-                next = std::min(next, t_stop);
-                if (next < t_stop && m_.uplifts(next)) return bisect_uplift(prev, next);
-            }
-            return INFINITY;
-        }
-        const double period = 2.0 * M_PI / m_.pulse.omega;
-        const double dt = period / 512.0;
-        double prev = t;
-        while (prev < t_stop) {
-            if (!charge()) return INFINITY;
-            double next = std::min(prev + dt, t_stop);
-            // A peak of |ax| in (prev, next] catches a pulse barely above the threshold.
-            const double w = m_.pulse.omega, ph = m_.pulse.phase;
-            const double k = std::ceil(((w * prev + ph) - M_PI / 2) / M_PI);
-            const double tpk = ((M_PI / 2 + k * M_PI) - ph) / w;
-            if (tpk > prev && tpk < next && m_.uplifts(tpk)) next = tpk;
-            if (next < t_stop && m_.uplifts(next)) return bisect_uplift(prev, next);
-            prev = next;
-        }
-        return INFINITY;
+        return m_.pulse.first_uplift(t, t_stop, [this](double x) { return m_.uplifts(x); }, [this] { return charge(); });
     }
 
     // ---- event functions: positive before the event, <= 0 once it has happened ----
@@ -839,9 +621,9 @@ void run_lanes(std::span<const CellModel> cells, std::span<CellResult> results,
 }  // namespace
 
 double rocking_acceleration(const CellModel& m, int side, double kappa, double ax, double ay, double theta) {
-    const RhsLane c{m.p2, m.alpha, kappa, ax, ay, 0.0, 0.0, 0.0, INFINITY, side, false,
-                    m.equations == Equations::linearised};
-    return rhs(coef(c), Ground{ax, ay}, theta);
+    const kernel::LaneCoef c{m.p2, m.alpha, kappa, static_cast<double>(side), m.equations == Equations::linearised ? 1.0 : 0.0,
+                             kappa == 0.0 ? 0.0 : 1.0};
+    return kernel::rhs(c, Ground{ax, ay}, theta);
 }
 
 void integrate_cells(std::span<const CellModel> cells, std::span<CellResult> results,

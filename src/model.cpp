@@ -24,14 +24,14 @@ bool CellModel::uplifts(double t) const {
 }
 
 bool CellModel::never_uplifts() const {
-    return pulse.peak_ax() <= (1.0 - std::abs(pulse.ay_g)) * uplift_slope(*this);
+    return pulse.peak_ax() <= (1.0 - pulse.peak_ay()) * uplift_slope(*this);
 }
 
 double CellModel::omega_max() const {
     // Rocking: the linearised growth rate p, raised by a strong ground motion through the
     // cos(alpha - theta) term; spring: small-angle frequency sqrt(kappa / 2).
-    double w = std::sqrt(p2 * (1.0 + pulse.peak_ax() + std::abs(pulse.ay_g)));
-    if (pulse.kind == PulseKind::sine) w = std::max(w, pulse.omega);
+    double w = std::sqrt(p2 * (1.0 + pulse.peak_ax() + pulse.peak_ay()));
+    w = std::max(w, pulse.time_scale());
     w = std::max(w, std::sqrt(p2 + 0.5 * kappa_max));
     return w;
 }

@@ -4,6 +4,7 @@
 #include <cstdlib>
 
 #include "rocksweep/errors.hpp"
+#include "rocksweep/pulse_library.hpp"
 
 namespace rocksweep {
 
@@ -16,8 +17,11 @@ public:
 
     const CLI::Option* option(const std::string& name) const {
         if (const CLI::Option* o = app_.get_option_no_throw(name)) return o;
-        for (const CLI::App* sub : app_.get_subcommands([](const CLI::App*) { return true; }))
-            if (const CLI::Option* o = sub->get_option_no_throw(name)) return o;
+        // The command's own first: sweep and simulate each have a --pulse.
+        for (bool parsed : {true, false})
+            for (const CLI::App* sub : app_.get_subcommands([](const CLI::App*) { return true; }))
+                if (sub->parsed() == parsed)
+                    if (const CLI::Option* o = sub->get_option_no_throw(name)) return o;
         return nullptr;
     }
     Source source(const std::string& name) const {
@@ -84,6 +88,17 @@ void check_block(const Given& given) {
         only_if(given, opt, given("--radius"), "--radius and --alpha (a rectangular block's I0/(m R^2) is 4/3)");
 }
 
+/// --cycles, --phase and the vertical component only where the pulse `name` (given as `shown`)
+/// takes them; "sine" is the one-sine, "constant" takes none.
+void check_pulse_parts(const Given& given, const std::string& name, const std::string& shown) {
+    const bool family = name != "sine" && name != "constant";
+    const PulseFamily f = family ? parse_pulse_family("pulse", name) : PulseFamily::one_sine;
+    const bool phased = name == "sine" || (family && takes_phase(f));
+    only_if(given, "--cycles", family && takes_cycles(f), "--pulse n-sine or cycloidal-c (here " + shown + ")");
+    for (const char* opt : {"--phase", "--vertical-amplitude", "--vertical-phase"})
+        only_if(given, opt, phased, "--pulse one-sine or n-sine (here " + shown + ")");
+}
+
 void check_simulate(const Given& given, const Options& o) {
     const SingleOptions& s = o.single;
     const std::string a = "--anchorage " + s.anchorage;
@@ -94,6 +109,7 @@ void check_simulate(const Given& given, const Options& o) {
     const bool constant_pulse = s.pulse == "constant" && s.record.empty();
     for (const char* opt : {"--omega-ratio", "--phase", "--vertical-amplitude", "--vertical-phase"})
         only_if(given, opt, !constant_pulse, "a sine pulse (here --pulse constant)");
+    if (s.record.empty()) check_pulse_parts(given, s.pulse, "--pulse " + s.pulse);
     only_if(given, "--duration", constant_pulse || !s.record.empty(), "--pulse constant (a sine pulse lasts one period 2 pi / omega_p)");
     excludes(given, "--stiffness", "--theta-f-ratio", "K fixes theta_f = 2 atan(F_u / (4 b K))");
     only_if(given, "--stiffness", s.anchorage == "constant", "--anchorage constant (here " + a + ")");
@@ -135,7 +151,10 @@ void check_combinations(const CLI::App& app, const std::string& subcommand, cons
     check_block(given);
     only_if(given, "--paper-dt", o.numerics.method == "paper", "--method paper (the events method chooses its own step)");
     if (subcommand == "simulate") check_simulate(given, o);
-    else check_sweep_kinds(given, o);
+    else {
+        check_sweep_kinds(given, o);
+        check_pulse_parts(given, o.pulse.family, "--pulse " + o.pulse.family);
+    }
 }
 
 }  // namespace rocksweep

@@ -165,6 +165,8 @@ SweepSpec make_sweep_spec(const Options& o) {
     spec.block = make_block(o.block);
     spec.equations = parse_equations(o.block.equations);
     spec.impact_threshold = o.numerics.impact_threshold;
+    spec.pulse_family = parse_pulse_family("pulse", o.pulse.family);
+    spec.pulse_cycles = takes_cycles(spec.pulse_family) ? o.pulse.cycles : 1;
     spec.phase = o.pulse.phase;
     spec.vertical_g = o.pulse.vertical_g;
     spec.vertical_phase = o.pulse.vertical_phase;
@@ -259,7 +261,9 @@ CellModel make_single_cell(const Options& o) {
         require_open("duration", s.duration_s, 0.0, INFINITY, "a pulse length > 0 s (needed by --pulse constant)");
         pulse.duration_s = s.duration_s;
     } else {
-        throw InputError("pulse", s.pulse, "one of sine, constant");
+        const PulseShape shape{parse_pulse_family("pulse", s.pulse), o.pulse.cycles, o.pulse.phase, o.pulse.vertical_g,
+                               o.pulse.vertical_phase};
+        pulse = make_pulse(shape, pulse.ax_g, s.omega_ratio * b.p());
     }
     const double strength = o.anchorage.strength_ratio * b.mass_kg * b.gravity;
     OptionNames names = anchorage_names(b, o.anchorage.strength_ratio, "theta-f-ratio", s.theta_f_ratio, "kmin-ratio", s.kmin_ratio);

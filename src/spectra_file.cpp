@@ -102,6 +102,8 @@ std::vector<Setting> result_settings(const SweepSpec& spec, const IntegratorSett
         num("energy_stop", "no-energy-stop", s.energy_stop ? 1.0 : 0.0, s.energy_stop ? "not given" : "given"),
         num("impact_threshold", "impact-threshold", spec.impact_threshold, format_number(spec.impact_threshold)),
         {"equations", "equations", to_string(spec.equations), 0.0, true},
+        {"pulse", "pulse", to_string(spec.pulse_family), 0.0, true},
+        num("pulse_cycles", "cycles", spec.pulse_cycles, std::to_string(spec.pulse_cycles)),
     };
 }
 

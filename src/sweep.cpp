@@ -27,13 +27,8 @@ CellModel SweepSpec::cell(std::size_t index) const {
     const std::size_t in = index % per;
     const double w_ratio = omega_ratio.at(in % omega_ratio.points);
     const double a_ratio = amplitude_ratio.at(in / omega_ratio.points);
-    Pulse pulse;
-    pulse.kind = PulseKind::sine;
-    pulse.omega = w_ratio * block.p();
-    pulse.ax_g = a_ratio * block.alpha_rad;  // a_p0 / g = (a_p0 / (alpha g)) alpha
-    pulse.phase = phase;
-    pulse.ay_g = vertical_g;
-    pulse.phase_y = vertical_phase;
+    // a_p / g = (a_p / (alpha g)) alpha
+    const Pulse pulse = make_pulse(pulse_shape(), a_ratio * block.alpha_rad, w_ratio * block.p());
     return make_cell_model(block, sc.anchorage, pulse, equations, impact_threshold);
 }
 

@@ -1,18 +1,32 @@
 #pragma once
-/// Ground pulses (physics.md §3): accelerations in units of g, time in s.
-#include <algorithm>
+/// Ground motions (physics.md §3, §8): accelerations in units of g, time in s, no motion
+/// outside the window [0, end_time()). `Pulse` is the plain description a cell carries; each
+/// family is its own type (excitation/*.hpp) answering what the integrator asks of it — the
+/// ground at t, the window's end, the times where it stops being smooth (next_kink) and its
+/// zeros (the adaptive law switches there), its peak, its time scale, where to look for the
+/// first uplift from rest (next_scan, peaks) — and its ground in the W-lane kernel (lane).
+/// The scalar questions are answered through visit(); the kernel instantiates its lane loop
+/// per family. A new family is one header and its registration here: a PulseKind, a case in
+/// visit(), and its name in pulse_library.hpp.
+#include <cfloat>
 #include <cmath>
 #include <memory>
 #include <vector>
 
+#include "rocksweep/excitation/ground.hpp"
+#include "rocksweep/excitation/harmonic.hpp"
+#include "rocksweep/excitation/recorded.hpp"
+#include "rocksweep/excitation/rectangle.hpp"
+#include "rocksweep/excitation/ricker.hpp"
+
 namespace rocksweep {
 
-enum class PulseKind { sine, constant, record };
+enum class PulseKind { sine, constant, record, ricker };
 
-/// One-sine pulse a_p0 sin(omega t + psi) on [0, 2 pi / omega], with an optional vertical
-/// component a_v0 sin(omega t + psi_v) over the same window; Housner's constant
-/// acceleration a_p0 held for `duration_s`; or a recorded horizontal ground motion, samples
-/// in g at a fixed interval, linear between samples. No motion outside the window.
+/// One ground motion. sine: a_p0 sin(omega t + psi) on [0, periods 2 pi / omega] with an
+/// optional vertical a_v0 sin(omega t + psi_v) over the same window (Harmonic); constant:
+/// Housner's a_p0 held for `duration_s` (Rectangle); record: samples in g at a fixed interval,
+/// linear between samples (Recorded); ricker: the Ricker wavelet of peak a_p0 and omega (Ricker).
 struct Pulse {
     PulseKind kind = PulseKind::sine;
     double ax_g = 0.0;          ///< horizontal amplitude a_p0 / g
@@ -20,72 +34,97 @@ struct Pulse {
     double phase = 0.0;         ///< psi [rad] (sine)
     double ay_g = 0.0;          ///< vertical amplitude a_v0 / g (sine)
     double phase_y = 0.0;       ///< psi_v [rad] (sine)
+    double periods = 1.0;       ///< sine: window length in periods 2 pi / omega
     double duration_s = 0.0;    ///< constant pulse length [s]
     std::shared_ptr<const std::vector<double>> record;  ///< record: samples / g
     double record_dt_s = 0.0;   ///< record: sampling interval [s]
 
-    double end_time() const {
-        switch (kind) {
-            case PulseKind::sine: return 2.0 * M_PI / omega;
-            case PulseKind::constant: return duration_s;
-            case PulseKind::record: return static_cast<double>(record->size() - 1) * record_dt_s;
-        }
-        return 0.0;
-    }
-    /// Horizontal ground acceleration / g at time t inside the window.
-    double ax(double t) const {
-        switch (kind) {
-            case PulseKind::sine: return ax_g * std::sin(omega * t + phase);
-            case PulseKind::constant: return ax_g;
-            case PulseKind::record: {
-                const std::vector<double>& a = *record;
-                const double x = t / record_dt_s;
-                const auto i = static_cast<std::size_t>(std::max(0.0, std::min(std::floor(x), static_cast<double>(a.size() - 2))));
-                const double u = x - static_cast<double>(i);
-                return a[i] + u * (a[i + 1] - a[i]);
-            }
-        }
-        return 0.0;
-    }
-    /// Record: the first sample time after t (strictly), where the ground's slope changes.
-    double next_sample(double t) const {
-        double k = std::floor(t / record_dt_s) + 1.0;
-        if (!(k * record_dt_s > t)) k += 1.0;
-        return k * record_dt_s;
-    }
-    /// Largest |ax| over the window, for deciding without integrating.
-    double peak_ax() const {
-        if (kind != PulseKind::record) return std::abs(ax_g);
-        double m = 0.0;
-        for (double a : *record) m = std::max(m, std::abs(a));
-        return m;
-    }
-    /// Vertical ground acceleration / g at time t inside the window.
-    double ay(double t) const {
-        return kind == PulseKind::sine ? ay_g * std::sin(omega * t + phase_y) : 0.0;
-    }
+    double end_time() const;
+    /// Horizontal, vertical ground acceleration / g at time t inside the window.
+    double ax(double t) const;
+    double ay(double t) const;
+    /// Largest |ax|, |ay| over the window, for deciding without integrating.
+    double peak_ax() const;
+    double peak_ay() const;
+    /// The pulse's own angular frequency for the step size [rad/s] (0: none).
+    double time_scale() const;
+    /// First time after t (strictly) where the ground stops being smooth inside the window
+    /// (a record's sample times), or +inf.
+    double next_kink(double t) const;
+    /// A record's name for next_kink: the first sample time after t.
+    double next_sample(double t) const { return next_kink(t); }
     /// First zero of ax after t (strictly), or +inf if none: the adaptive law switches there.
     double next_ax_zero(double t) const;
+    /// First time in [t, t_stop) at which `lifts(t)` holds, to machine precision, or +inf;
+    /// `charge()` is called per scanned sample and may end the search (returns false).
+    template <class Lifts, class Charge>
+    double first_uplift(double t, double t_stop, Lifts&& lifts, Charge&& charge) const;
+    /// Visits in order the times in (t0, t1) where |ax| may peak, plus (with a vertical
+    /// component) a scan of the window; `visit(t)` returns false to stop. Times at or below t0
+    /// may come first: callers skip them.
+    template <class Visit>
+    void demand_points(double t0, double t1, Visit&& visit) const;
 };
 
-inline double Pulse::next_ax_zero(double t) const {
-    if (kind == PulseKind::record) {
-        // Piecewise linear: the first segment after t whose ends differ in sign (or that ends on 0).
-        for (double t0 = t, t1 = next_sample(t); t0 < end_time(); t0 = t1, t1 = next_sample(t1)) {
-            const double a0 = ax(t0), a1 = ax(std::min(t1, end_time()));
-            if (a0 != 0.0 && (a1 == 0.0 || (a0 > 0.0) != (a1 > 0.0))) {
-                const double tz = t0 + (t1 - t0) * a0 / (a0 - a1);
-                if (tz > t) return tz;  // a zero that rounds onto t itself is the one just passed
-            }
-        }
-        return INFINITY;
+/// Calls f with the family of p.
+template <class F>
+decltype(auto) visit(const Pulse& p, F&& f) {
+    switch (p.kind) {
+        case PulseKind::sine: return f(Harmonic{p.ax_g, p.omega, p.phase, p.ay_g, p.phase_y, p.periods});
+        case PulseKind::constant: return f(Rectangle{p.ax_g, p.duration_s});
+        case PulseKind::record: return f(Recorded{p.record.get(), p.record_dt_s});
+        case PulseKind::ricker: return f(Ricker{p.ax_g, p.omega});
     }
-    if (kind != PulseKind::sine || ax_g == 0.0) return INFINITY;
-    // zeros at omega t + psi = k pi
-    double k = std::floor((omega * t + phase) / M_PI) + 1.0;
-    double tz = (k * M_PI - phase) / omega;
-    if (!(tz > t * (1.0 + 1e-14) + 1e-300)) tz = ((k + 1.0) * M_PI - phase) / omega;
-    return tz;
+    return f(Rectangle{0.0, 0.0});  // not reached: every kind has its case
+}
+
+inline double Pulse::end_time() const { return visit(*this, [](const auto& e) { return e.end_time(); }); }
+inline double Pulse::ax(double t) const { return visit(*this, [t](const auto& e) { return e.ax(t); }); }
+inline double Pulse::ay(double t) const { return visit(*this, [t](const auto& e) { return e.ay(t); }); }
+inline double Pulse::peak_ax() const { return visit(*this, [](const auto& e) { return e.peak_ax(); }); }
+inline double Pulse::peak_ay() const { return visit(*this, [](const auto& e) { return e.peak_ay(); }); }
+inline double Pulse::time_scale() const { return visit(*this, [](const auto& e) { return e.time_scale(); }); }
+inline double Pulse::next_kink(double t) const { return visit(*this, [t](const auto& e) { return e.next_kink(t); }); }
+inline double Pulse::next_ax_zero(double t) const {
+    return visit(*this, [t](const auto& e) { return e.next_ax_zero(t); });
+}
+
+template <class Lifts, class Charge>
+double Pulse::first_uplift(double t, double t_stop, Lifts&& lifts, Charge&& charge) const {
+    return visit(*this, [&](const auto& e) {
+        if (!std::isfinite(e.next_scan(t))) return double{INFINITY};  // the ground does not change
+        // The uplift instant in (lo, hi], hi lifting and lo not, to machine precision.
+        auto bisect = [&](double lo, double hi) {
+            for (int i = 0; i < 200 && hi - lo > 4 * DBL_EPSILON * hi; ++i) {
+                const double mid = 0.5 * (lo + hi);
+                (lifts(mid) ? hi : lo) = mid;
+            }
+            return hi;
+        };
+        for (double prev = t; prev < t_stop;) {
+            if (!charge()) return double{INFINITY};
+            double next = std::min(e.next_scan(prev), t_stop);
+            // A peak of |ax| in (prev, next) catches a pulse barely above the threshold.
+            e.peaks(prev, next, [&](double tp) {
+                if (!(tp > prev && lifts(tp))) return true;
+                next = tp;
+                return false;
+            });
+            if (next < t_stop && lifts(next)) return bisect(prev, next);
+            prev = next;
+        }
+        return double{INFINITY};
+    });
+}
+
+template <class Visit>
+void Pulse::demand_points(double t0, double t1, Visit&& visit_point) const {
+    visit(*this, [&](const auto& e) {
+        bool go = true;
+        e.peaks(t0, t1, [&](double tp) { return go = visit_point(tp); });
+        if (go && e.peak_ay() != 0.0)
+            for (double t = t0; t < t1 && visit_point(t); t = e.next_scan(t)) {}
+    });
 }
 
 }  // namespace rocksweep

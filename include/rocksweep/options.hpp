@@ -20,6 +20,8 @@ struct BlockOptions {
 };
 
 struct PulseOptions {
+    std::string family = "one-sine";  ///< sweep --pulse (pulse_library.hpp)
+    int cycles = 1;                   ///< n of n-sine and cycloidal-c
     double phase = 0.0, vertical_g = 0.0, vertical_phase = 0.0;
 };
 
@@ -52,7 +54,7 @@ struct NumericsOptions {
 };
 
 struct SingleOptions {
-    std::string pulse = "sine", anchorage = "free";
+    std::string pulse = "sine", anchorage = "free";  ///< pulse: sine, constant or a sweep's family
     double omega_ratio = 4.0, amplitude_ratio = 2.7, duration_s = 0.0;
     double theta_f_ratio = 1.0, kmin_ratio = 0.5, stiffness = 0.0;
     double t_end_s = 0.0, output_dt_s = 0.01;

@@ -9,6 +9,7 @@
 #include "rocksweep/block.hpp"
 #include "rocksweep/model.hpp"
 #include "rocksweep/outcome.hpp"
+#include "rocksweep/pulse_library.hpp"
 
 namespace rocksweep {
 
@@ -28,19 +29,22 @@ struct Scenario {
     double kmin_ratio = 1;     ///< K_min / K_max; 1 unless adaptive
 };
 
-/// Everything that defines the cells of a sweep (sine pulses).
+/// Everything that defines the cells of a sweep.
 struct SweepSpec {
     Block block{};
     Equations equations = Equations::nonlinear;
     double impact_threshold = 1e-3;  ///< fraction of p alpha
-    double phase = 0.0;              ///< psi [rad]
-    double vertical_g = 0.0;         ///< a_v0 / g
+    PulseFamily pulse_family = PulseFamily::one_sine;
+    int pulse_cycles = 1;            ///< n of n-sine and cycloidal-c
+    double phase = 0.0;              ///< psi [rad] (one-sine, n-sine)
+    double vertical_g = 0.0;         ///< a_v0 / g (one-sine, n-sine)
     double vertical_phase = 0.0;     ///< psi_v [rad]
     double friction = 0.0;           ///< mu_s of the base, to flag cells that would slide; 0: unchecked
-    Axis omega_ratio;                ///< omega_p / p
-    Axis amplitude_ratio;            ///< a_p0 / (alpha g)
+    Axis omega_ratio;                ///< omega_p / p (a rectangle lasts pi / omega_p)
+    Axis amplitude_ratio;            ///< a_p / (alpha g), a_p the peak ground acceleration
     std::vector<Scenario> scenarios;
 
+    PulseShape pulse_shape() const { return {pulse_family, pulse_cycles, phase, vertical_g, vertical_phase}; }
     std::size_t cells_per_scenario() const { return omega_ratio.points * amplitude_ratio.points; }
     std::size_t cell_count() const { return cells_per_scenario() * scenarios.size(); }
     /// index = scenario * (n_amp n_omega) + i_amp * n_omega + i_omega (C order per scenario).

@@ -108,9 +108,15 @@ bad_input(grid_option_for_simulate "--omega-ratio-range = 1 2 is invalid: an opt
           simulate --config ${CFG} --omega-ratio-range 1 2 -o ${OUT})
 
 # Command words and counts.
-bad_input(misspelled_subcommand "'swep' is not a command of rocksweep: one of sweep, .*simulate, info" swep --config ${CFG} -o ${OUT})
-bad_input(no_subcommand "a command is required: one of sweep, .*simulate, info" --config ${CFG})
-bad_input(simulate_option_for_sweep "'--pulse' is not an option of rocksweep sweep" sweep --config ${CFG} -o ${OUT} --pulse sine)
+bad_input(misspelled_subcommand "'swep' is not a command of rocksweep: one of sweep, merge, simulate, info, design" swep --config ${CFG} -o ${OUT})
+bad_input(no_subcommand "a command is required: one of sweep, merge, simulate, info, design" --config ${CFG})
+bad_input(simulate_option_for_sweep "'--anchorage' is not an option of rocksweep sweep" sweep --config ${CFG} -o ${OUT} --anchorage free)
+bad_input(sweep_pulse_family "--pulse = sine is invalid: not a known word; allowed: one of one-sine, n-sine, cycloidal-a"
+          sweep --config ${CFG} -o ${OUT} --pulse sine)
+bad_input(cycles_without_cycled_family "--cycles = 3 is invalid: only with --pulse n-sine or cycloidal-c \\(here --pulse rectangle\\)"
+          sweep --config ${CFG} -o ${OUT} --pulse rectangle --cycles 3)
+bad_input(phase_without_sine_family "--phase = 1 is invalid: only with --pulse one-sine or n-sine \\(here --pulse ricker\\)"
+          sweep --config ${CFG} -o ${OUT} --pulse ricker --phase 1)
 bad_input(option_given_twice "--mass is invalid: 2 values given; allowed: one value" sweep --config ${CFG} -o ${OUT} --mass 1 --mass 2)
 bad_input(range_with_three_values "--omega-ratio-range is invalid: 3 values given; allowed: 2 values"
           sweep --config ${CFG} -o ${OUT} --omega-ratio-range 1 2 3)
@@ -143,8 +149,8 @@ bad_config(misplaced_underscore "1: '3__361' is not a number \\(an underscore mu
 bad_config(unclosed_array "2: an array without its closing '\\]'" "mass = 1\nkmin-ratios = [0.5,\n 0.1\n")
 bad_config(empty_array "1: an empty array" "anchorages = []\n")
 bad_config(unquoted_string "1: 'nonlinear' is not a value \\(a string needs quotes; dates are not used by rocksweep\\)" "equations = nonlinear\n")
-file(WRITE ${B}/command_key_at_top.toml "mass = 1000\npulse = \"sine\"\n")
-bad_input(config_command_key_at_top "config key 'pulse' is an option of rocksweep simulate: put it in the config's \\[simulate\\] table"
+file(WRITE ${B}/command_key_at_top.toml "mass = 1000\nduration = 1\n")
+bad_input(config_command_key_at_top "config key 'duration' is an option of rocksweep simulate: put it in the config's \\[simulate\\] table"
           simulate --config ${B}/command_key_at_top.toml -o ${OUT})
 bad_config(inline_table "1: inline tables" "block = { mass = 1 }\n")
 

@@ -29,6 +29,7 @@ check "^rocksweep: error: --max-steps = 5000 is invalid: 2000000, $tail" --max-s
 check "^rocksweep: error: --no-energy-stop = given is invalid: not given, $tail" --no-energy-stop
 check "^rocksweep: error: --impact-threshold = 0.002 is invalid: 0.001, $tail" --impact-threshold 0.002
 check "^rocksweep: error: --equations = linearised is invalid: nonlinear, $tail" --equations linearised
+check "^rocksweep: error: --pulse = ricker is invalid: one-sine, $tail" --pulse ricker
 # The paper's method: its step shapes results; --steps-per-period is then not asked for.
 paper="$dir/paper.h5"
 "$rs" sweep --config "$cfg" "${grid[@]}" --method paper -o "$paper" || fail "paper sweep"
