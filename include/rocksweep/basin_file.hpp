@@ -1,6 +1,11 @@
 #pragma once
-/// The HDF5 file of `rocksweep basin` (docs/hdf5.md, "Basin files"): per scenario the simulated
-/// and predicted outcome maps over (theta_dot / p, theta / alpha) and the energy boundaries.
+/// The HDF5 file of `rocksweep basin`:
+///   /axes/theta_ratio, theta_dot_ratio, curve_theta_ratio   dimension scales (units "1")
+///   /basins/<scenario>/outcome, outcome_predicted   uint8 [n_theta_dot][n_theta], flag_values
+///   /basins/<scenario>/no_impact_boundary, impact_boundary   theta_dot / p at curve_theta_ratio
+///   /provenance   version and the effective config
+/// Root attributes: the block (p_rad_s, alpha_rad, e, ...) and the numerics; scenario attributes:
+/// the anchorage, rest_fraction and the counts of the cell-by-cell comparison.
 #include <string>
 #include <vector>
 
