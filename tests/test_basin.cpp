@@ -71,6 +71,25 @@ TEST(BasinBoundary, SpringBrokenBeforeAlphaAddsOnlyItsStoredEnergy) {
     EXPECT_NEAR(en.boundary(th).no_impact, m.p() * std::sqrt(2.0 * (1.0 - std::cos(m.alpha - th))), 1e-9 * m.p());
 }
 
+// The curves bound what the swing-by-swing argument predicts: 1 % of p beyond the no-impact
+// boundary the block falls without an impact, 1 % short of it it does not; beyond the one-impact
+// boundary it falls after an impact.
+TEST(BasinBoundary, CurvesSeparateThePredictedOutcomes) {
+    for (const Case& c : paper_cases()) {
+        const CellModel m = free_cell(c.anchorage);
+        const BasinEnergy en(m);
+        const double d = 0.01 * m.p();
+        for (double r : {0.1, 0.2, 0.3, 0.6, 0.9, 1.2, 1.45}) {
+            const double th = r * m.alpha;
+            const BasinBoundary b = en.boundary(th);
+            EXPECT_EQ(en.outcome(th, b.no_impact + d), Outcome::overturned_no_impact) << c.name << " " << r;
+            EXPECT_NE(en.outcome(th, b.no_impact - d), Outcome::overturned_no_impact) << c.name << " " << r;
+            EXPECT_EQ(en.outcome(th, b.impact - d), Outcome::overturned_impact) << c.name << " " << r;
+            EXPECT_EQ(en.outcome(-th, -b.impact + d), Outcome::overturned_impact) << c.name << " " << r;
+        }
+    }
+}
+
 TEST(BasinEnergy, MirrorSymmetric) {
     for (const Case& c : paper_cases()) {
         const CellModel m = free_cell(c.anchorage);
@@ -126,6 +145,29 @@ TEST(BasinMap, SimulationConfirmsTheEnergyBoundaryCellByCell) {
         std::printf("%-16s rest %.4f (predicted %.4f)  clear %zu, disagree %zu; near %zu, disagree %zu\n", c.name.c_str(),
                     rest_fraction(sim), rest_fraction(pred), cmp.clear, cmp.clear_disagree, cmp.near, cmp.near_disagree);
     }
+}
+
+// A K_max spring that breaks only at 2 alpha lets an outward swing turn where the K_min potential
+// already falls: the law's switch to K_min there throws the block over. The energy argument
+// follows it; so does the kernel integrating to the end (energy_stop off: the kernel's own
+// energy decision, energy.hpp's free_fate, does not yet see this case and calls such blocks safe).
+TEST(BasinMap, AdaptiveSwitchBeyondTheSoftPotentialsPeak) {
+    const Block b = smatteo();
+    const CellModel m = free_cell(adaptive_anchorage(b, 0.4 * b.mass_kg * b.gravity, 2 * b.alpha_rad, 0.1));
+    const BasinEnergy en(m);
+    BasinGrid g;
+    g.theta_ratio = {-1.5, 1.5, 41};
+    g.theta_dot_ratio = {-0.45, 0.45, 41};
+    IntegratorSettings s;
+    s.energy_stop = false;
+    const std::vector<std::uint8_t> sim = simulate_basin(m, g, s), pred = predict_basin(en, m, g);
+    const BasinComparison cmp = compare_basin(en, m, g, sim, pred, 0.01);
+    EXPECT_EQ(cmp.clear_disagree, 0u);
+    // From (0, 0.268 p) the block turns below K_max's barrier (0.277 p from theta = 0) but past
+    // K_min's peak (reached from 0.259 p): the switch there throws it over.
+    EXPECT_EQ(en.outcome(0.0, 0.268 * m.p()), Outcome::overturned_no_impact);
+    EXPECT_GT(en.boundary(0.0).no_impact, 0.268 * m.p());
+    EXPECT_EQ(en.outcome(0.0, 0.25 * m.p()), Outcome::safe);
 }
 
 }  // namespace
