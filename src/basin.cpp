@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "rocksweep/energy.hpp"
+#include "rocksweep/integrator.hpp"
 
 namespace rocksweep {
 
@@ -116,6 +117,10 @@ Outcome BasinEnergy::outcome(double theta, double theta_dot) const {
     auto brk = [&]() { return spring() ? (k_max ? m_.break_max : m_.break_min) : INFINITY; };
     auto potential = [&]() -> const SwingPotential& { return !spring() ? gravity_ : (k_max ? stiff_ : soft_); };
     if (spring() && phi >= brk()) spring() = false;
+    // Balanced at rest on the potential's peak (theta = alpha of a free block): it stays there
+    // for ever, which the kernel reports as not converged.
+    const double kappa = !spring() ? 0.0 : (k_max ? m_.kappa_max : m_.kappa_min);
+    if (u == 0.0 && rocking_acceleration(m_, side, kappa, 0.0, 0.0, theta) == 0.0) return Outcome::not_converged;
     for (int phase = 0; phase < 1'000'000; ++phase) {
         const SwingPotential& v = potential();
         const double energy = 0.5 * u * u + v(phi);

@@ -118,6 +118,18 @@ TEST(BasinMap, LaneStartsFromTheGivenState) {
     EXPECT_EQ(r.impacts_total, 0);
 }
 
+// Exactly on gravity's peak and at rest the block never moves: both say so (not converged).
+TEST(BasinMap, BalancedOnTheCornerNeverDecides) {
+    CellModel c = free_cell(free_anchorage());
+    c.theta0 = c.alpha;
+    IntegratorSettings s;
+    s.max_steps = 1000;
+    EXPECT_EQ(integrate_cell(c, s).outcome, Outcome::not_converged);
+    EXPECT_EQ(BasinEnergy(c).outcome(c.alpha, 0.0), Outcome::not_converged);
+    EXPECT_EQ(BasinEnergy(c).outcome(c.alpha, 1e-4 * c.p()), Outcome::overturned_no_impact);
+    EXPECT_EQ(BasinEnergy(c).outcome(c.alpha, -1e-4 * c.p()), Outcome::safe);
+}
+
 TEST(BasinMap, StateBeyondTheFractureAngleHasLostItsSpring) {
     const Block b = smatteo();
     CellModel c = free_cell(constant_anchorage(b, 0.4 * b.mass_kg * b.gravity, b.alpha_rad / 4));

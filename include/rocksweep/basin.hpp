@@ -54,7 +54,8 @@ public:
     /// impact; the adaptive law as the integrator applies it after the excitation (K_max from
     /// an impact outward, K_min from an outward turning point on). The state's springs and K
     /// are those the integrator starts a lane with (CellModel::theta0). Needs |theta| < pi/2.
-    /// Returns safe, overturned_impact or overturned_no_impact.
+    /// Returns safe, overturned_impact or overturned_no_impact; not_converged for a block at
+    /// rest exactly on the potential's peak (theta = alpha of a free block), which never moves.
     Outcome outcome(double theta, double theta_dot) const;
 
     BasinBoundary boundary(double theta) const;
