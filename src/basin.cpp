@@ -111,7 +111,8 @@ Outcome BasinEnergy::outcome(double theta, double theta_dot) const {
     int side = (theta != 0.0 ? theta : theta_dot) > 0.0 ? 1 : -1;
     double phi = std::abs(theta), u = side * theta_dot;  // u > 0: outward
     bool intact[2] = {anchored, anchored};               // [0]: the spring of theta > 0
-    bool k_max = !adaptive || u > 0.0;
+    // Moving outward the law wants K_max; the passive law raises K only at theta = 0.
+    bool k_max = !adaptive || (u > 0.0 && (m_.adaptive_law == AdaptiveLaw::paper || theta == 0.0));
     int impacts = 0;
     auto spring = [&]() -> bool& { return intact[side > 0 ? 0 : 1]; };
     auto brk = [&]() { return spring() ? (k_max ? m_.break_max : m_.break_min) : INFINITY; };

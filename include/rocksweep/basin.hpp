@@ -52,7 +52,8 @@ public:
     /// every swing: the potential of gravity and of the intact spring; a spring that reaches its
     /// fracture angle breaks and its stored energy is lost; theta_dot <- e theta_dot at each
     /// impact; the adaptive law as the integrator applies it after the excitation (K_max from
-    /// an impact outward, K_min from an outward turning point on). The state's springs and K
+    /// an impact outward, K_min from an outward turning point on; the passive law's start with
+    /// K_min away from theta = 0 included). The state's springs and K
     /// are those the integrator starts a lane with (CellModel::theta0). Needs |theta| < pi/2.
     /// Returns safe, overturned_impact or overturned_no_impact; not_converged for a block at
     /// rest exactly on the potential's peak (theta = alpha of a free block), which never moves.
