@@ -9,6 +9,7 @@
 #include <regex>
 #include <sstream>
 
+#include "rocksweep/basin_command.hpp"
 #include "rocksweep/config_file.hpp"
 #include "rocksweep/design_command.hpp"
 #include "rocksweep/errors.hpp"
@@ -304,10 +305,12 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
     design->fallthrough();
     add_run_options(*design, design_cmd.run);
     add_design_options(*design, design_cmd);
-    for (CLI::App* sub : {sweep, merge, sim, info, design})
+    BasinCommand basin_cmd;
+    CLI::App* basin = add_basin_command(app, basin_cmd);
+    for (CLI::App* sub : {sweep, merge, sim, info, design, basin})
         sub->footer("Block, pulse, anchorage, grid and numerics options (and --config): rocksweep --help");
 
-    const std::vector<std::string> subcommands{"sweep", "merge", "simulate", "info", "design"};
+    const std::vector<std::string> subcommands{"sweep", "merge", "simulate", "info", "design", "basin"};
     app.config_formatter(std::make_shared<TomlConfig>(subcommands, std::vector<std::string>{"block", "pulse", "anchorage", "grid", "numerics"},
                                                       [config] { return config->as<std::string>(); }));
     const std::vector<std::string> args(argv + (argc > 0 ? 1 : 0), argv + argc);
@@ -316,6 +319,7 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
         const CLI::App* chosen = app.get_subcommands().at(0);
         check_combinations(app, chosen->get_name(), opts, args);
         if (*design) check_design_options(app, args);
+        if (*basin) check_basin_options(app, args);
     } catch (const CLI::Success& e) {  // --help, --help-all, --version: to stdout, once
         if (mpi.is_root()) app.exit(e);
         return 0;
@@ -342,6 +346,7 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
             if (!mpi.is_root()) return 0;  // reading and writing files: one rank
             return run_merge(opts, merge_cmd, config_text);
         }
+        if (*basin) return mpi.is_root() ? run_basin(opts, basin_cmd, config_text) : 0;
         return run_sweep(opts, sweep_cmd, config_text, mpi);
     } catch (const InputError& e) {
         err << "rocksweep: error: " << cli_message(e) << "\n";

@@ -75,6 +75,7 @@ public:
                                           : 2.0 * M_PI / (m.omega_max() * set_.steps_per_period);
         r_.t_overturn_s = NAN;
         r_.peak_force_ratio = m.anchorage == AnchorageKind::free ? NAN : 0.0;
+        if (m.theta0 != 0.0 || m.theta_dot0 != 0.0) start_moving();
     }
 
     bool finished() const { return done_; }
@@ -306,6 +307,19 @@ private:
         th_ = thd_ = 0.0;
         side_ = m_.pulse.ax(tu) > 0.0 ? -1 : 1;  // positive ground acceleration tips to theta < 0
         k_max_ = true;  // at uplift ax theta < 0: the adaptive law's K_max
+    }
+
+    /// A run from a state other than rest (basins of attraction): already rocking, so the
+    /// uplift test of leave_rest never applies. The side is theta0's sign, or theta_dot0's
+    /// when theta0 = 0. The adaptive law picks K from the state (Eq. 21-22); at theta_dot0 = 0
+    /// it takes K_min, as at the turning point of an outward swing.
+    void start_moving() {
+        th_ = m_.theta0;
+        thd_ = m_.theta_dot0;
+        side_ = (th_ != 0.0 ? th_ : thd_) > 0.0 ? 1 : -1;
+        k_max_ = false;
+        update_stiffness();
+        if (intact(side_) && side_ * th_ >= break_angle()) broken_[side_ > 0 ? 0 : 1] = true;
     }
 
     /// First time in [t, t_stop) at which the block uplifts, or +inf.

@@ -31,6 +31,9 @@ struct CellModel {
     double mass_kg = 0.0, radius_m = 0.0, gravity = 9.81;  ///< for the work of Eq. 23
     double half_width_m = 0.0;                            ///< b, for the work of Eq. 24
     double inertia = 0.0;                                  ///< I0 [kg m^2]
+    /// State at t = 0 [rad, rad/s]; (0, 0) is rest, where every run of a spectrum starts. A
+    /// spring whose fracture angle lies below |theta0| on theta0's side breaks at once.
+    double theta0 = 0.0, theta_dot0 = 0.0;
     Pulse pulse;
 
     double p() const;

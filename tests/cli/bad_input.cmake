@@ -108,8 +108,8 @@ bad_input(grid_option_for_simulate "--omega-ratio-range = 1 2 is invalid: an opt
           simulate --config ${CFG} --omega-ratio-range 1 2 -o ${OUT})
 
 # Command words and counts.
-bad_input(misspelled_subcommand "'swep' is not a command of rocksweep: one of sweep, merge, simulate, info, design" swep --config ${CFG} -o ${OUT})
-bad_input(no_subcommand "a command is required: one of sweep, merge, simulate, info, design" --config ${CFG})
+bad_input(misspelled_subcommand "'swep' is not a command of rocksweep: one of sweep, merge, simulate, info, design, basin" swep --config ${CFG} -o ${OUT})
+bad_input(no_subcommand "a command is required: one of sweep, merge, simulate, info, design, basin" --config ${CFG})
 bad_input(simulate_option_for_sweep "'--anchorage' is not an option of rocksweep sweep" sweep --config ${CFG} -o ${OUT} --anchorage free)
 bad_input(sweep_pulse_family "--pulse = sine is invalid: not a known word; allowed: one of one-sine, n-sine, cycloidal-a"
           sweep --config ${CFG} -o ${OUT} --pulse sine)
@@ -143,7 +143,7 @@ add_test(NAME cli.bad_input.config_bom_in_key
                  ${OUT} -- ${RS} sweep --config ${B}/bom_in_key.toml -o ${OUT})
 string(ASCII 1 CTRL)
 bad_config(control_in_key "1: expected '=' after a key, found byte 0x01" "mass${CTRL}x = 1\n")
-bad_config(unknown_table "2: table \\[foo\\] is not one of rocksweep's: \\[sweep\\], .*\\[info\\], .*\\[block\\]"
+bad_config(unknown_table "2: table \\[foo\\] is not one of rocksweep's: \\[sweep\\], \\[merge\\], \\[simulate\\], \\[info\\], \\[design\\], \\[basin\\], \\[block\\]"
            "mass = 1\n[foo]\n")
 bad_config(misplaced_underscore "1: '3__361' is not a number \\(an underscore must sit between two digits\\)" "mass = 3__361\n")
 bad_config(unclosed_array "2: an array without its closing '\\]'" "mass = 1\nkmin-ratios = [0.5,\n 0.1\n")

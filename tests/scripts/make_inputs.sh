@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Inputs shared by the plotting tests (the `plot_inputs` fixture), small enough to take a
 # second or two: a 20 x 20 sweep of all seven S. Matteo scenarios and of the free one alone,
-# the paper's sample case as HDF5 and CSV histories, and Housner's constant-pulse pair.
+# the paper's sample case as HDF5 and CSV histories, Housner's constant-pulse pair, and a
+# 41 x 41 basin map of the seven scenarios.
 # usage: make_inputs.sh ROCKSWEEP CONFIG DIR
 set -euo pipefail
 rs=$1 cfg=$2 dir=$3
@@ -19,3 +20,4 @@ for d in 0.6380 0.6300; do
   "$rs" simulate --config "$cfg" --pulse constant --amplitude-ratio 1.3 --duration "$d" \
     --equations linearised --t-end 6 -q -o "$dir/housner_$d.h5"
 done
+"$rs" basin --config "$cfg" --theta-ratio-points 41 --theta-dot-ratio-points 41 --quiet -o "$dir/basin.h5"
