@@ -1,6 +1,7 @@
 #include "rocksweep/cli.hpp"
 
 #include <CLI/CLI.hpp>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -28,6 +29,17 @@ namespace {
 // Ranges: what a physicist would accept for a block, a pulse or an anchorage, and no wider, so
 // that no derived quantity can overflow or vanish in the kernel (README, "Command line").
 const std::string m = "m", kg = "kg", rad = "rad", none;
+
+/// CLI11's form of a vector default, "[a,b]", each number to its last digit (CLI11's own keeps 6).
+std::string exact_list(const std::vector<double>& v) {
+    std::string out;
+    for (const double x : v) {
+        char buf[32];
+        const auto end = std::to_chars(buf, buf + sizeof buf, x).ptr;
+        out += (out.empty() ? "[" : ",") + std::string(buf, end);
+    }
+    return out + "]";
+}
 
 void add_model_options(CLI::App& app, Options& o) {
     BlockOptions& b = o.block;
@@ -88,8 +100,10 @@ void add_model_options(CLI::App& app, Options& o) {
         ->check(integer_in(1, 100000))->capture_default_str()->group(grd);
     app.add_option("--anchorages", g.anchorages, "Scenario kinds: free, constant, adaptive")
         ->check(one_of({"free", "constant", "adaptive"}))->capture_default_str()->group(grd);
+    // 1/3 among the defaults: shown to the last digit, so that /provenance/config replays it.
     app.add_option("--theta-f-ratios", g.theta_f_ratios, "Constant K: fracture angles theta_f / alpha, one scenario each")
-        ->check(number_in(1e-3, 1e3, none))->capture_default_str()->group(grd);
+        ->check(number_in(1e-3, 1e3, none))->default_function([&g] { return exact_list(g.theta_f_ratios); })
+        ->capture_default_str()->group(grd);
     app.add_option("--kmin-ratios", g.kmin_ratios, "Adaptive: K_min / K_max, one scenario each")
         ->check(number_in(1e-6, 1, none))->capture_default_str()->group(grd);
     app.add_option("--adaptive-theta-f-ratio", g.adaptive_theta_f_ratio, "Adaptive: theta_f / alpha of the K_max spring")
@@ -331,7 +345,9 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
         return 2;
     }
     if (*sim) use_history_defaults(app, opts.numerics);
-    const std::string config_text = app.config_to_str(true, false);
+    const std::string command = app.get_subcommands().at(0)->get_name();
+    const std::string config_text =
+        effective_config(app, command, [&](const std::string& name) { return defines_run(command, name, opts); });
     try {
         if (*info) {
             if (mpi.is_root()) print_info(opts, std::cout);

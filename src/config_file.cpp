@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <iterator>
 #include <map>
+#include <regex>
 
 #include "rocksweep/errors.hpp"
 
@@ -18,6 +19,12 @@ struct Entry {
     std::vector<std::string> inputs;
     int line;
 };
+
+/// The escapes of a basic string, `\n` and the like, read and written.
+struct Escape {
+    char letter, meaning;
+};
+constexpr Escape escapes[] = {{'"', '"'}, {'\\', '\\'}, {'n', '\n'}, {'t', '\t'}, {'r', '\r'}, {'b', '\b'}, {'f', '\f'}};
 
 bool is_bare(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_'; }
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
@@ -238,16 +245,9 @@ private:
                 continue;
             }
             const char e = s_[i_++];
-            switch (e) {
-                case '"': out += '"'; break;
-                case '\\': out += '\\'; break;
-                case 'n': out += '\n'; break;
-                case 't': out += '\t'; break;
-                case 'r': out += '\r'; break;
-                case 'b': out += '\b'; break;
-                case 'f': out += '\f'; break;
-                default: fail(std::string("an unknown escape \\") + e + " in a string");
-            }
+            const auto* it = std::find_if(std::begin(escapes), std::end(escapes), [e](const Escape& x) { return x.letter == e; });
+            if (it == std::end(escapes)) fail(std::string("an unknown escape \\") + e + " in a string");
+            out += it->meaning;
         }
     }
 
@@ -265,7 +265,61 @@ private:
     std::map<std::vector<std::string>, int> tables_;
 };
 
+/// Written bare, a value must read back as the same string: numbers as Parser::number leaves
+/// them (no underscores, no sign that it would keep) and the two booleans.
+bool reads_back_bare(const std::string& v) {
+    static const std::regex number(R"(-?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?)");
+    return v == "true" || v == "false" || std::regex_match(v, number);
+}
+
+std::string toml_value(const std::string& v) {
+    if (reads_back_bare(v)) return v;
+    std::string out = "\"";
+    for (const char c : v) {
+        const auto* it = std::find_if(std::begin(escapes), std::end(escapes), [c](const Escape& x) { return x.meaning == c; });
+        out += it == std::end(escapes) ? std::string(1, c) : std::string{'\\', it->letter};
+    }
+    return out + "\"";
+}
+
+/// An option's value for the config: what was given, else its default ("" none). CLI11 shows
+/// a vector's default as "[a,b]".
+std::vector<std::string> values_of(const CLI::Option& opt) {
+    if (opt.count() > 0) return opt.results();
+    const std::string& d = opt.get_default_str();
+    if (d.empty() || opt.get_type_size_max() == 0) return {};  // flags: only when given
+    if (d.size() < 2 || d.front() != '[' || d.back() != ']') return {d};
+    std::vector<std::string> out;
+    std::size_t from = 1;
+    for (std::size_t comma; (comma = d.find(',', from)) != std::string::npos; from = comma + 1) out.push_back(d.substr(from, comma - from));
+    out.push_back(d.substr(from, d.size() - 1 - from));
+    return out;
+}
+
 }  // namespace
+
+std::string effective_config(const CLI::App& app, const std::string& subcommand,
+                             const std::function<bool(const std::string& name)>& written) {
+    std::string out;
+    auto add = [&](const CLI::App& a, const std::string& prefix) {
+        for (const CLI::Option* opt : a.get_options()) {
+            const std::string& name = opt->get_single_name();
+            if (opt == a.get_config_ptr() || !written(name)) continue;
+            const std::vector<std::string> values = values_of(*opt);
+            if (values.empty()) continue;
+            out += prefix + name + " = ";
+            if (values.size() == 1 && opt->get_items_expected_max() <= 1) {
+                out += toml_value(values[0]) + "\n";
+                continue;
+            }
+            for (std::size_t i = 0; i < values.size(); ++i) out += (i ? ", " : "[") + toml_value(values[i]);
+            out += "]\n";
+        }
+    };
+    add(app, "");
+    if (!subcommand.empty()) add(*app.get_subcommand(subcommand), subcommand + ".");
+    return out;
+}
 
 TomlConfig::TomlConfig(std::vector<std::string> subcommands, std::vector<std::string> groups,
                        std::function<std::string()> file_name)

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <set>
 
 #include "rocksweep/errors.hpp"
 #include "rocksweep/memory_budget.hpp"
@@ -286,6 +287,47 @@ CellModel make_single_cell(const Options& o) {
                    (s.t_end_s > 0.0 ? "with --t-end " : "with the default t_end of ") + format_short(t_end) + " s, " +
                        "a history of " + format_short(samples) + " samples");
     return m;
+}
+
+bool defines_run(const std::string& command, const std::string& name, const Options& o) {
+    // Kept out, these would also make a replay overwrite, resume or fall silent.
+    static const std::set<std::string> invocation{"output", "resume", "overwrite", "quiet"};
+    if (invocation.count(name)) return false;
+    const bool sweep = command != "simulate";
+    const auto& kinds = o.grid.anchorages;
+    const auto swept = [&](const char* kind) { return sweep && std::find(kinds.begin(), kinds.end(), kind) != kinds.end(); };
+    const SingleOptions& s = o.single;
+    const bool record = !s.record.empty(), sine = !record && s.pulse == "sine", rectangular = !is_equivalent(o.block);
+    const bool sim_anchored = !sweep && s.anchorage != "free", sim_adaptive = !sweep && s.anchorage == "adaptive";
+    const std::map<std::string, bool> rules{
+        {"half-width", rectangular},
+        {"half-height", rectangular},
+        {"phase", sweep || sine},
+        {"vertical-amplitude", sweep || sine},
+        {"vertical-phase", sweep || sine},
+        {"strength-ratio", swept("constant") || swept("adaptive") || sim_anchored},
+        {"adaptive-break", swept("adaptive") || sim_adaptive},
+        {"paper-dt", o.numerics.method == "paper"},
+        {"omega-ratio-range", sweep},
+        {"omega-ratio-points", sweep},
+        {"amplitude-ratio-range", sweep},
+        {"amplitude-ratio-points", sweep},
+        {"anchorages", sweep},
+        {"scenario", sweep},
+        {"theta-f-ratios", swept("constant")},
+        {"kmin-ratios", swept("adaptive")},
+        {"adaptive-theta-f-ratio", swept("adaptive")},
+        {"pulse", !record},
+        {"omega-ratio", sine},
+        {"amplitude-ratio", !record},
+        {"duration", !record && s.pulse == "constant"},
+        {"theta-f-ratio", sim_anchored && !(s.stiffness > 0.0)},
+        {"kmin-ratio", sim_adaptive},
+        {"stiffness", !sweep && s.anchorage == "constant"},
+    };
+    const auto it = rules.find(name);
+    if (it != rules.end()) return it->second;
+    return name.rfind("record", 0) != 0 || record;  // --record-units and the like go with --record
 }
 
 double default_t_end(const CellModel& m) { return m.pulse.end_time() + 10.0 * 2.0 * M_PI / m.p(); }

@@ -6,6 +6,7 @@
 #include "rocksweep/config_file.hpp"
 #include "rocksweep/errors.hpp"
 #include "rocksweep/option_checks.hpp"
+#include "rocksweep/options.hpp"
 
 using namespace rocksweep;
 
@@ -88,24 +89,74 @@ TEST(TomlConfig, RefusesWithTheLine) {
     for (const auto& [text, message] : cases) EXPECT_EQ(refusal(text), message) << text;
 }
 
-TEST(TomlConfig, ReadsWhatConfigTomlWrites) {
+TEST(TomlConfig, ReadsBackWhatEffectiveConfigWrites) {
     CLI::App app;
-    double mass = 3361.0;
+    double mass = 3361.0, gravity = 9.81, radius = 0.0;
     std::vector<double> range{1.0, 22.0};
-    std::string name = "a \"quoted\" name";
+    std::vector<std::string> kinds{"free", "constant"};
+    std::string name = "a \"quoted\" \\ name";
+    bool flag = false, other_flag = false;
     app.add_option("--mass", mass)->capture_default_str();
-    app.add_option("--range", range)->capture_default_str();
+    app.add_option("--gravity", gravity)->capture_default_str();
+    app.add_option("--radius", radius);  // no default and not given: no value to write
+    app.add_option("--range", range)->expected(2)->capture_default_str();
+    app.add_option("--kinds", kinds)->capture_default_str();
     app.add_option("--name", name)->capture_default_str();
+    app.add_flag("--flag", flag);
+    app.add_flag("--other-flag", other_flag);
     CLI::App* sweep = app.add_subcommand("sweep");
-    bool quiet = true;
-    sweep->add_flag("--quiet", quiet);
-    const std::string written = app.config_to_str(true, false);
-    const auto items = read(written);
-    ASSERT_EQ(items.size(), 4u) << written;
-    EXPECT_EQ(items[0].inputs, std::vector<std::string>{"3361"});
-    EXPECT_EQ(items[1].inputs, std::vector<std::string>{"[1,22]"});  // a default, quoted: CLI11 splits it
-    EXPECT_EQ(items[2].inputs, std::vector<std::string>{name});
-    EXPECT_EQ(items[3].parents, std::vector<std::string>{"sweep"});
+    std::size_t chunk = 512;
+    std::string output;
+    sweep->add_option("--chunk", chunk)->capture_default_str();
+    sweep->add_option("-o,--output", output);
+    CLI::App* simulate = app.add_subcommand("simulate");
+    double omega = 4.0;
+    simulate->add_option("--omega-ratio", omega)->capture_default_str();
+    app.parse("--mass 3361.50 --kinds adaptive --flag sweep --chunk 64 -o out.h5", false);
+
+    const std::string text =
+        effective_config(app, "sweep", [](const std::string& key) { return key != "gravity" && key != "output"; });
+    EXPECT_EQ(text,
+              "mass = 3361.50\n"
+              "range = [1, 22]\n"
+              "kinds = [\"adaptive\"]\n"
+              "name = \"a \\\"quoted\\\" \\\\ name\"\n"
+              "flag = true\n"
+              "sweep.chunk = 64\n");
+    const auto items = read(text);
+    ASSERT_EQ(items.size(), 6u);
+    EXPECT_EQ(items[0].inputs, std::vector<std::string>{"3361.50"});  // as given: bitwise the same double
+    EXPECT_EQ(items[1].inputs, (std::vector<std::string>{"1", "22"}));
+    EXPECT_EQ(items[2].inputs, std::vector<std::string>{"adaptive"});
+    EXPECT_EQ(items[3].inputs, std::vector<std::string>{name});
+    EXPECT_EQ(items[4].inputs, std::vector<std::string>{"true"});
+    EXPECT_EQ(items[5].parents, std::vector<std::string>{"sweep"});
+    EXPECT_EQ(items[5].name, "chunk");
+    EXPECT_EQ(items[5].inputs, std::vector<std::string>{"64"});
+}
+
+TEST(DefinesRun, KeepsWhatTheRunUsedOnly) {
+    Options o;
+    for (const char* key : {"output", "resume", "overwrite", "quiet"}) EXPECT_FALSE(defines_run("sweep", key, o)) << key;
+    EXPECT_TRUE(defines_run("sweep", "theta-f-ratios", o));
+    EXPECT_TRUE(defines_run("sweep", "mass", o));
+    EXPECT_FALSE(defines_run("sweep", "paper-dt", o));
+    o.grid.anchorages = {"free"};
+    EXPECT_FALSE(defines_run("sweep", "theta-f-ratios", o));
+    EXPECT_FALSE(defines_run("sweep", "strength-ratio", o));
+    EXPECT_TRUE(defines_run("simulate", "omega-ratio", o));
+    EXPECT_FALSE(defines_run("simulate", "omega-ratio-range", o));
+    EXPECT_FALSE(defines_run("simulate", "theta-f-ratio", o));  // a free block
+    EXPECT_FALSE(defines_run("simulate", "record-units", o));
+    o.single.record = "sylmar.dat";
+    o.single.anchorage = "constant";
+    o.single.stiffness = 2e5;
+    for (const char* key : {"pulse", "omega-ratio", "amplitude-ratio", "phase", "vertical-amplitude", "theta-f-ratio", "kmin-ratio"})
+        EXPECT_FALSE(defines_run("simulate", key, o)) << key;
+    for (const char* key : {"record", "record-units", "record-scale", "stiffness", "strength-ratio"})
+        EXPECT_TRUE(defines_run("simulate", key, o)) << key;
+    o.block.radius_m = 1.5;
+    EXPECT_FALSE(defines_run("simulate", "half-width", o));
 }
 
 TEST(OptionChecks, SayWhichOfNotANumberNotAnIntegerOutOfRange) {

@@ -84,6 +84,12 @@ SweepSpec make_sweep_spec(const Options& o);
 RecordSource record_source(const SingleOptions& s);
 /// The single cell of `rocksweep simulate`.
 CellModel make_single_cell(const Options& o);
+/// Whether the option `name` (a config key: "mass", "omega-ratio") defined the run of `command`
+/// ("sweep" or "simulate") with options `o`, and so belongs in its /provenance/config: not how
+/// the run was started (output, resume, quiet), not what this run ignored (a record-driven
+/// history's pulse, a free block's anchorage strength, a sweep's theta-f-ratios without
+/// 'constant'). Options it does not know of are kept.
+bool defines_run(const std::string& command, const std::string& name, const Options& o);
 /// Default record length of a history: the pulse and ten rocking periods 2 pi / p after it.
 double default_t_end(const CellModel& m);
 

@@ -1,0 +1,16 @@
+# Every output replays: its own stored config, given back with --config, reproduces its result
+# datasets bitwise (replay.sh). Sweeps narrowed on the command line, with every default, with an
+# equivalent block and the paper's method; histories of a sine pulse, a constant one and a record.
+set(REPLAY ${CMAKE_CURRENT_SOURCE_DIR}/replay.sh)
+function(replay name)
+  add_test(NAME cli.replay.${name} COMMAND bash ${REPLAY} ${RS} ${CMAKE_CURRENT_BINARY_DIR}/replay_${name} ${ARGN})
+endfunction()
+replay(sweep_narrowed sweep --config ${CFG} --anchorages free adaptive --kmin-ratios 0.2 --omega-ratio-points 5 --amplitude-ratio-points 4 --refine 2)
+replay(sweep_defaults sweep --omega-ratio-points 3 --amplitude-ratio-points 3 --friction-coefficient 0.3)
+replay(sweep_equivalent_paper sweep --radius 1.5 --alpha 0.2 --frequency-parameter 2.5 --omega-ratio-points 3 --amplitude-ratio-points 3
+       --method paper --paper-dt 0.001 --no-energy-stop --scenario free --scenario constant_tf0.333333)
+replay(simulate_sine simulate --config ${CFG} --anchorage adaptive --kmin-ratio 0.1 --omega-ratio 3.5 --amplitude-ratio 3 --vertical-amplitude 0.2)
+replay(simulate_constant_stiffness simulate --pulse constant --amplitude-ratio 1.3 --duration 0.638 --equations linearised
+       --anchorage constant --stiffness 2e5)
+replay(simulate_record simulate --config ${CFG} --record ${PROJECT_SOURCE_DIR}/tests/data/northridge_1994_sylmar.dat --record-units m/s^2
+       --record-scale 0.5 --anchorage constant --theta-f-ratio 0.5 --t-end 20)
