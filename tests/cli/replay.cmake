@@ -14,3 +14,6 @@ replay(simulate_constant_stiffness simulate --pulse constant --amplitude-ratio 1
        --anchorage constant --stiffness 2e5)
 replay(simulate_record simulate --config ${CFG} --record ${PROJECT_SOURCE_DIR}/tests/data/northridge_1994_sylmar.dat --record-units m/s^2
        --record-scale 0.5 --anchorage constant --theta-f-ratio 0.5 --t-end 20)
+add_test(NAME cli.record_history_keeps_no_pulse
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/record_history.sh ${RS} ${CFG} ${PROJECT_SOURCE_DIR}/tests/data/northridge_1994_sylmar.dat
+                 ${CMAKE_CURRENT_BINARY_DIR}/record_history)
