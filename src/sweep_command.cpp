@@ -79,6 +79,7 @@ struct Start {
     std::optional<OutputClaim> claim;
     SweepResults results;
     std::vector<IndexRange> todo;
+    bool complete = false;  ///< resumed a finished sweep: nothing to compute, nothing to write
 };
 
 void prepare_output(Start& s, const SweepSpec& spec, const IntegratorSettings& settings, const SweepCommand& cmd,
@@ -89,7 +90,12 @@ void prepare_output(Start& s, const SweepSpec& spec, const IntegratorSettings& s
     const bool exists = s.claim->exists();
     if (exists && cmd.resume) {
         s.results = read_spectra_results(cmd.output, spec, settings);
-        if (!cmd.quiet)
+        // A requeued job resumes a sweep that already ended: saving again would only replace
+        // its recorded wall time with this run's few milliseconds.
+        s.complete = s.results.done_count() == spec.cell_count();
+        if (s.complete) {
+            if (!cmd.quiet) log << cmd.output << ": sweep already complete (" << spec.cell_count() << " cells); nothing to do\n";
+        } else if (!cmd.quiet)
             log << "resuming " << cmd.output << ": " << s.results.done_count() << " of " << spec.cell_count()
                 << " cells already done\n";
     } else if (exists && !cmd.overwrite) {
@@ -122,7 +128,10 @@ int run_sweep(const Options& opts, const SweepCommand& cmd, const std::string& c
             why = cli_message(e);
         }
     }
+    constexpr int nothing_to_do = -1;
+    if (start.complete) verdict = nothing_to_do;
     if (mpi.size() > 1) MPI_Bcast(&verdict, 1, MPI_INT, 0, mpi.comm());
+    if (verdict == nothing_to_do) return 0;
     if (verdict != 0) {
         log << "rocksweep: error: " << why << "\n";
         return verdict;

@@ -17,3 +17,9 @@ replay(simulate_record simulate --config ${CFG} --record ${PROJECT_SOURCE_DIR}/t
 add_test(NAME cli.record_history_keeps_no_pulse
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/record_history.sh ${RS} ${CFG} ${PROJECT_SOURCE_DIR}/tests/data/northridge_1994_sylmar.dat
                  ${CMAKE_CURRENT_BINARY_DIR}/record_history)
+
+# A requeued job: --resume on a finished sweep does nothing, leaves the file as it was.
+add_test(NAME cli.resume_complete_is_noop COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/resume_complete.sh ${RS} ${CFG} ${CMAKE_CURRENT_BINARY_DIR}/complete1 1)
+add_test(NAME cli.resume_complete_is_noop.mpirun=2
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/resume_complete.sh ${RS} ${CFG} ${CMAKE_CURRENT_BINARY_DIR}/complete2 2)
+set_tests_properties(cli.resume_complete_is_noop.mpirun=2 PROPERTIES PROCESSORS 2)
