@@ -90,18 +90,22 @@ void prepare_output(Start& s, const SweepSpec& spec, const IntegratorSettings& s
     const bool exists = s.claim->exists();
     if (exists && cmd.resume) {
         s.results = read_spectra_results(cmd.output, spec, settings);
-        // A requeued job resumes a sweep that already ended: saving again would only replace
-        // its recorded wall time with this run's few milliseconds.
-        s.complete = s.results.done_count() == spec.cell_count();
-        if (s.complete) {
-            if (!cmd.quiet) log << cmd.output << ": sweep already complete (" << spec.cell_count() << " cells); nothing to do\n";
-        } else if (!cmd.quiet)
-            log << "resuming " << cmd.output << ": " << s.results.done_count() << " of " << spec.cell_count()
-                << " cells already done\n";
     } else if (exists && !cmd.overwrite) {
         throw InputError("output", cmd.output, "a new file; it exists: pass --resume to continue it or --overwrite to replace it");
     }
     s.todo = restrict_to_part(missing_ranges(s.results), part);
+    // A requeued job resumes a sweep (or its part) that already ended: saving again would only
+    // replace its recorded wall time with this run's few milliseconds.
+    s.complete = exists && cmd.resume && s.todo.empty();
+    if (!(exists && cmd.resume) || cmd.quiet) return;
+    const std::size_t total = spec.cell_count();
+    if (!s.complete)
+        log << "resuming " << cmd.output << ": " << s.results.done_count() << " of " << total << " cells already done\n";
+    else if (part.count > 1)
+        log << cmd.output << ": part " << part.index << " of " << part.count << " already complete (" << cells_in_part(total, part)
+            << " cells); nothing to do\n";
+    else
+        log << cmd.output << ": sweep already complete (" << total << " cells); nothing to do\n";
 }
 
 }  // namespace
