@@ -213,11 +213,17 @@ std::string parse_message(const CLI::App& app, const CLI::ParseError& e, const s
     }
     const std::string extra = "INI was not able to parse ";
     if (what.rfind(extra, 0) == 0) {
-        const std::string key = what.substr(extra.size());
+        std::string key = what.substr(extra.size()), table;
+        for (const std::string& s : subcommands)  // "sweep.mass": the key sits in the [sweep] table
+            if (key.rfind(s + ".", 0) == 0) table = s, key = key.substr(s.size() + 1);
+        const std::string where = table.empty() ? "" : " in the [" + table + "] table";
         for (const std::string& s : subcommands)  // a command's own option outside its table
-            if (app.get_subcommand(s)->get_option_no_throw("--" + key))
-                return "config key '" + key + "' is an option of rocksweep " + s + ": put it in the config's [" + s + "] table";
-        return "config key '" + shorten(key) + "' is not an option of rocksweep (see rocksweep --help)";
+            if (s != table && app.get_subcommand(s)->get_option_no_throw("--" + key))
+                return "config key '" + key + "'" + where + " is an option of rocksweep " + s + ": put it in the config's [" + s + "] table";
+        if (!table.empty() && app.get_option_no_throw("--" + key))
+            return "config key '" + key + "'" + where + " is an option of every command: put it at the top of the config "
+                   "(or under [block], [pulse], [anchorage], [grid] or [numerics])";
+        return "config key '" + shorten(table.empty() ? key : table + "." + key) + "' is not an option of rocksweep (see rocksweep --help)";
     }
     const std::vector<const CLI::App*> chosen = app.get_subcommands([](const CLI::App* s) { return s->parsed(); });
     std::vector<std::string> left;
