@@ -307,6 +307,7 @@ bool defines_run(const std::string& command, const std::string& name, const Opti
         {"vertical-phase", sweep || sine},
         {"strength-ratio", swept("constant") || swept("adaptive") || sim_anchored},
         {"adaptive-break", swept("adaptive") || sim_adaptive},
+        {"adaptive-law", swept("adaptive") || sim_adaptive},
         {"paper-dt", o.numerics.method == "paper"},
         {"omega-ratio-range", sweep},
         {"omega-ratio-points", sweep},

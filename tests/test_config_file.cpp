@@ -144,6 +144,7 @@ TEST(DefinesRun, KeepsWhatTheRunUsedOnly) {
     o.grid.anchorages = {"free"};
     EXPECT_FALSE(defines_run("sweep", "theta-f-ratios", o));
     EXPECT_FALSE(defines_run("sweep", "strength-ratio", o));
+    EXPECT_FALSE(defines_run("sweep", "adaptive-law", o));
     EXPECT_TRUE(defines_run("simulate", "omega-ratio", o));
     EXPECT_FALSE(defines_run("simulate", "omega-ratio-range", o));
     EXPECT_FALSE(defines_run("simulate", "theta-f-ratio", o));  // a free block

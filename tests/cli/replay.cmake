@@ -10,7 +10,7 @@ replay(sweep_narrowed sweep --config ${CFG} --anchorages free adaptive --kmin-ra
 replay(sweep_defaults sweep --omega-ratio-points 3 --amplitude-ratio-points 3 --friction-coefficient 0.3)
 replay(sweep_equivalent_paper sweep --radius 1.5 --alpha 0.2 --frequency-parameter 2.5 --omega-ratio-points 2 --amplitude-ratio-points 2
        --method paper --paper-dt 0.002 --scenario free --scenario constant_tf0.333333)
-replay(simulate_sine simulate --config ${CFG} --anchorage adaptive --kmin-ratio 0.1 --omega-ratio 3.5 --amplitude-ratio 3 --vertical-amplitude 0.2)
+replay(simulate_sine simulate --config ${CFG} --anchorage adaptive --adaptive-law passive --kmin-ratio 0.1 --omega-ratio 3.5 --amplitude-ratio 3 --vertical-amplitude 0.2)
 replay(simulate_constant_stiffness simulate --pulse constant --amplitude-ratio 1.3 --duration 0.638 --equations linearised
        --anchorage constant --stiffness 2e5 --no-energy-stop)
 replay(simulate_record simulate --config ${CFG} --record ${PROJECT_SOURCE_DIR}/tests/data/northridge_1994_sylmar.dat --record-units m/s^2
