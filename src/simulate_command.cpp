@@ -34,13 +34,12 @@ int run_simulate(const Options& o, const SimulateCommand& cmd, const std::string
     } else {
         std::vector<std::pair<std::string, std::string>> words{
             {"anchorage", o.single.anchorage}, {"pulse", o.single.record.empty() ? o.single.pulse : "record"},
-            {"adaptive_law", to_string(m.adaptive_law)}, {"method", to_string(settings.method)},
+            {"record", o.single.record}, {"adaptive_law", to_string(m.adaptive_law)}, {"method", to_string(settings.method)},
             {"equations", to_string(m.equations)}, {"config", config_text}, {"version", ROCKSWEEP_VERSION}};
         std::vector<std::pair<std::string, double>> numbers{
             {"p_rad_s", m.p()}, {"alpha_rad", m.alpha}, {"e", m.e}, {"steps_per_period", settings.steps_per_period},
             {"impact_threshold", o.numerics.impact_threshold}, {"output_dt_s", o.single.output_dt_s}};
         // Only what defined the run: a record-driven history carries no pulse, a free block no K ratios.
-        if (defines_run("simulate", "record", o)) words.push_back({"record", o.single.record});
         const std::tuple<const char*, const char*, double> ratios[] = {
             {"omega_ratio", "omega-ratio", o.single.omega_ratio}, {"amplitude_ratio", "amplitude-ratio", o.single.amplitude_ratio},
             {"theta_f_ratio", "theta-f-ratio", o.single.theta_f_ratio}, {"kmin_ratio", "kmin-ratio", o.single.kmin_ratio}};

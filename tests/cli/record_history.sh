@@ -24,7 +24,7 @@ pulse_keys = {"phase", "vertical-amplitude", "vertical-phase", "simulate.pulse",
 assert not pulse_keys & set(keys), sorted(pulse_keys & set(keys))
 assert "simulate.record-units" in keys and "simulate.record" in keys
 attrs, keys = names("pulse.h5")
-assert {"omega_ratio", "amplitude_ratio", "theta_f_ratio"} <= attrs and "kmin_ratio" not in attrs and "record" not in attrs, sorted(attrs)
+assert {"omega_ratio", "amplitude_ratio", "theta_f_ratio"} <= attrs and "kmin_ratio" not in attrs, sorted(attrs)
 assert {"simulate.omega-ratio", "simulate.amplitude-ratio", "simulate.theta-f-ratio", "strength-ratio"} <= set(keys), keys
 print("ok")
 PY
