@@ -6,8 +6,8 @@
 //
 // Prints, per repeat and best of all: chunks/s, wall time per chunk, and rank 0's CPU time per
 // chunk (its real cost when it does not have a core to itself). See benchmarks/README.md.
-#include "rocksweep/mpi_session.hpp"
-#include "rocksweep/scheduler.hpp"
+#include "rocksweep/parallel/mpi_session.hpp"
+#include "rocksweep/parallel/scheduler.hpp"
 
 #include <CLI/CLI.hpp>
 

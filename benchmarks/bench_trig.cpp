@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-#include "rocksweep/fastmath.hpp"
+#include "rocksweep/physics/fastmath.hpp"
 
 // sleef.h declares the AVX2 entry points only when compiling with -mavx (__AVX__); this file is
 // built for baseline x86-64 and calls them behind a CPU check, so it declares them itself.

@@ -7,10 +7,10 @@
 #include <cstring>
 #include <vector>
 
-#include "rocksweep/anchorage.hpp"
-#include "rocksweep/integrator.hpp"
-#include "rocksweep/refine.hpp"
-#include "rocksweep/sweep.hpp"
+#include "rocksweep/physics/anchorage.hpp"
+#include "rocksweep/physics/integrator.hpp"
+#include "rocksweep/grid/refine.hpp"
+#include "rocksweep/grid/sweep.hpp"
 
 using namespace rocksweep;
 using Clock = std::chrono::steady_clock;

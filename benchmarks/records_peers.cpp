@@ -28,13 +28,13 @@
 #include <string>
 #include <vector>
 
-#include "rocksweep/anchorage.hpp"
-#include "rocksweep/block.hpp"
-#include "rocksweep/integrator.hpp"
-#include "rocksweep/intensity.hpp"
-#include "rocksweep/model.hpp"
-#include "rocksweep/record.hpp"
-#include "rocksweep/record_suite.hpp"
+#include "rocksweep/physics/anchorage.hpp"
+#include "rocksweep/physics/block.hpp"
+#include "rocksweep/physics/integrator.hpp"
+#include "rocksweep/records/intensity.hpp"
+#include "rocksweep/physics/model.hpp"
+#include "rocksweep/records/record.hpp"
+#include "rocksweep/records/record_suite.hpp"
 
 using namespace rocksweep;
 
@@ -52,7 +52,7 @@ struct Setting {
 // The reference pair: two tight settings that differ in both knobs. A run on which they
 // disagree is sensitive to perturbations of that size (chaotic), and is excluded from the
 // theta error claim. The timed settings: the sweep's default (48, 1e-3), simulate's (384,
-// 1e-4, include/rocksweep/history.hpp) and the paper's method (dt 0.0025 s, threshold 1e-3).
+// 1e-4, include/rocksweep/physics/history.hpp) and the paper's method (dt 0.0025 s, threshold 1e-3).
 const std::vector<Setting> kSettings = {
     {"reference", Method::events, 4096, 1e-8, false},
     {"reference_check", Method::events, 2048, 1e-7, false},

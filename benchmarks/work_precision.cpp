@@ -31,11 +31,11 @@
 #include <string>
 #include <vector>
 
-#include "rocksweep/anchorage.hpp"
-#include "rocksweep/block.hpp"
-#include "rocksweep/integrator.hpp"
-#include "rocksweep/model.hpp"
-#include "rocksweep/sweep.hpp"
+#include "rocksweep/physics/anchorage.hpp"
+#include "rocksweep/physics/block.hpp"
+#include "rocksweep/physics/integrator.hpp"
+#include "rocksweep/physics/model.hpp"
+#include "rocksweep/grid/sweep.hpp"
 
 using namespace rocksweep;
 using Clock = std::chrono::steady_clock;

@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
-#include "rocksweep/anchorage.hpp"
-#include "rocksweep/energy.hpp"
-#include "rocksweep/history.hpp"
-#include "rocksweep/integrator.hpp"
-#include "rocksweep/record.hpp"
+#include "rocksweep/physics/anchorage.hpp"
+#include "rocksweep/physics/energy.hpp"
+#include "rocksweep/physics/history.hpp"
+#include "rocksweep/physics/integrator.hpp"
+#include "rocksweep/records/record.hpp"
 
 using namespace rocksweep;
 

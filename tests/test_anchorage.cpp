@@ -4,10 +4,10 @@
 #include <cmath>
 #include <vector>
 
-#include "rocksweep/anchorage.hpp"
-#include "rocksweep/errors.hpp"
-#include "rocksweep/history.hpp"
-#include "rocksweep/integrator.hpp"
+#include "rocksweep/physics/anchorage.hpp"
+#include "rocksweep/core/errors.hpp"
+#include "rocksweep/physics/history.hpp"
+#include "rocksweep/physics/integrator.hpp"
 
 using namespace rocksweep;
 

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "rocksweep/anchorage.hpp"
-#include "rocksweep/basin.hpp"
-#include "rocksweep/basin_map.hpp"
+#include "rocksweep/physics/anchorage.hpp"
+#include "rocksweep/physics/basin.hpp"
+#include "rocksweep/physics/basin_map.hpp"
 
 namespace rocksweep {
 namespace {

@@ -3,8 +3,8 @@
 
 #include <cmath>
 
-#include "rocksweep/block.hpp"
-#include "rocksweep/errors.hpp"
+#include "rocksweep/physics/block.hpp"
+#include "rocksweep/core/errors.hpp"
 
 using namespace rocksweep;
 

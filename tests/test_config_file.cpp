@@ -3,10 +3,10 @@
 
 #include <sstream>
 
-#include "rocksweep/config_file.hpp"
-#include "rocksweep/errors.hpp"
-#include "rocksweep/option_checks.hpp"
-#include "rocksweep/options.hpp"
+#include "rocksweep/app/config_file.hpp"
+#include "rocksweep/core/errors.hpp"
+#include "rocksweep/app/option_checks.hpp"
+#include "rocksweep/app/options.hpp"
 
 using namespace rocksweep;
 

@@ -5,8 +5,8 @@
 #include <numeric>
 #include <stdexcept>
 
-#include "rocksweep/design_criterion.hpp"
-#include "rocksweep/refine.hpp"
+#include "rocksweep/design/design_criterion.hpp"
+#include "rocksweep/grid/refine.hpp"
 
 using namespace rocksweep;
 

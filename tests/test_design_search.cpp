@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "rocksweep/design_search.hpp"
+#include "rocksweep/design/design_search.hpp"
 
 using namespace rocksweep;
 

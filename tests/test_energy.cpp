@@ -6,10 +6,10 @@
 #include <memory>
 #include <vector>
 
-#include "rocksweep/anchorage.hpp"
-#include "rocksweep/energy.hpp"
-#include "rocksweep/history.hpp"
-#include "rocksweep/integrator.hpp"
+#include "rocksweep/physics/anchorage.hpp"
+#include "rocksweep/physics/energy.hpp"
+#include "rocksweep/physics/history.hpp"
+#include "rocksweep/physics/integrator.hpp"
 
 using namespace rocksweep;
 

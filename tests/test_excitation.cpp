@@ -7,10 +7,10 @@
 #include <cmath>
 #include <vector>
 
-#include "rocksweep/anchorage.hpp"
-#include "rocksweep/integrator.hpp"
-#include "rocksweep/pulse_library.hpp"
-#include "rocksweep/sweep.hpp"
+#include "rocksweep/physics/anchorage.hpp"
+#include "rocksweep/physics/integrator.hpp"
+#include "rocksweep/physics/pulse_library.hpp"
+#include "rocksweep/grid/sweep.hpp"
 
 using namespace rocksweep;
 

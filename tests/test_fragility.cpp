@@ -1,4 +1,4 @@
-// Fragility fits (include/rocksweep/fragility.hpp): recovery of a known median and beta from
+// Fragility fits (include/rocksweep/records/fragility.hpp): recovery of a known median and beta from
 // seeded synthetic data, with tolerances of a few standard errors of the sample size used; the
 // coverage of the 95 % intervals; the degenerate data each fit must answer without iterating;
 // and reading capacities off IDA curves.
@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "rocksweep/fragility.hpp"
+#include "rocksweep/records/fragility.hpp"
 
 using namespace rocksweep;
 

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "rocksweep/grid_layout.hpp"
-#include "rocksweep/hdf5.hpp"
+#include "rocksweep/io/grid_layout.hpp"
+#include "rocksweep/io/hdf5.hpp"
 #include "test_support.hpp"
 
 using namespace rocksweep;

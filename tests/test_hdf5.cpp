@@ -17,12 +17,12 @@
 
 #include <unistd.h>
 
-#include "rocksweep/anchorage.hpp"
-#include "rocksweep/block.hpp"
-#include "rocksweep/errors.hpp"
-#include "rocksweep/hdf5.hpp"
-#include "rocksweep/history_file.hpp"
-#include "rocksweep/spectra_file.hpp"
+#include "rocksweep/physics/anchorage.hpp"
+#include "rocksweep/physics/block.hpp"
+#include "rocksweep/core/errors.hpp"
+#include "rocksweep/io/hdf5.hpp"
+#include "rocksweep/io/history_file.hpp"
+#include "rocksweep/io/spectra_file.hpp"
 #include "test_support.hpp"
 
 namespace fs = std::filesystem;

@@ -6,9 +6,9 @@
 #include <initializer_list>
 #include <string>
 
-#include "rocksweep/anchorage.hpp"
-#include "rocksweep/history.hpp"
-#include "rocksweep/record.hpp"
+#include "rocksweep/physics/anchorage.hpp"
+#include "rocksweep/physics/history.hpp"
+#include "rocksweep/records/record.hpp"
 
 using namespace rocksweep;
 

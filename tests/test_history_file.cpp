@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
-#include "rocksweep/errors.hpp"
-#include "rocksweep/hdf5.hpp"
-#include "rocksweep/history_file.hpp"
+#include "rocksweep/core/errors.hpp"
+#include "rocksweep/io/hdf5.hpp"
+#include "rocksweep/io/history_file.hpp"
 #include "test_support.hpp"
 
 namespace fs = std::filesystem;

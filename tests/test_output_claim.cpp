@@ -8,9 +8,9 @@
 #include <string>
 #include <system_error>
 
-#include "rocksweep/errors.hpp"
-#include "rocksweep/hdf5.hpp"
-#include "rocksweep/output_claim.hpp"
+#include "rocksweep/core/errors.hpp"
+#include "rocksweep/io/hdf5.hpp"
+#include "rocksweep/io/output_claim.hpp"
 #include "test_support.hpp"
 
 namespace fs = std::filesystem;

@@ -9,12 +9,12 @@
 #include <vector>
 
 #include "test_support.hpp"
-#include "rocksweep/anchorage.hpp"
-#include "rocksweep/errors.hpp"
-#include "rocksweep/history.hpp"
-#include "rocksweep/integrator.hpp"
-#include "rocksweep/intensity.hpp"
-#include "rocksweep/record.hpp"
+#include "rocksweep/physics/anchorage.hpp"
+#include "rocksweep/core/errors.hpp"
+#include "rocksweep/physics/history.hpp"
+#include "rocksweep/physics/integrator.hpp"
+#include "rocksweep/records/intensity.hpp"
+#include "rocksweep/records/record.hpp"
 
 using namespace rocksweep;
 using rocksweep::testing::write_file;

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "rocksweep/intensity.hpp"
+#include "rocksweep/records/intensity.hpp"
 
 using namespace rocksweep;
 

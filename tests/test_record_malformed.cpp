@@ -7,8 +7,8 @@
 #include <string>
 
 #include "test_support.hpp"
-#include "rocksweep/errors.hpp"
-#include "rocksweep/record.hpp"
+#include "rocksweep/core/errors.hpp"
+#include "rocksweep/records/record.hpp"
 
 using namespace rocksweep;
 using rocksweep::testing::write_file;

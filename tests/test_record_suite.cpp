@@ -6,8 +6,8 @@
 #include <string>
 
 #include "test_support.hpp"
-#include "rocksweep/errors.hpp"
-#include "rocksweep/record_suite.hpp"
+#include "rocksweep/core/errors.hpp"
+#include "rocksweep/records/record_suite.hpp"
 
 using namespace rocksweep;
 using rocksweep::testing::write_file;

@@ -6,7 +6,7 @@
 #include <functional>
 #include <vector>
 
-#include "rocksweep/refine.hpp"
+#include "rocksweep/grid/refine.hpp"
 
 using namespace rocksweep;
 

@@ -1,8 +1,8 @@
 // Scheduler, MPI session and progress report, as one process. For MPI this covers the size-1
 // path only; the multi-rank protocol is checked under mpirun by tests/mpi/.
-#include "rocksweep/mpi_session.hpp"
-#include "rocksweep/progress.hpp"
-#include "rocksweep/scheduler.hpp"
+#include "rocksweep/parallel/mpi_session.hpp"
+#include "rocksweep/parallel/progress.hpp"
+#include "rocksweep/parallel/scheduler.hpp"
 
 #include <gtest/gtest.h>
 

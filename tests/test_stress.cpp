@@ -7,9 +7,9 @@
 #include <random>
 #include <vector>
 
-#include "rocksweep/anchorage.hpp"
-#include "rocksweep/energy.hpp"
-#include "rocksweep/integrator.hpp"
+#include "rocksweep/physics/anchorage.hpp"
+#include "rocksweep/physics/energy.hpp"
+#include "rocksweep/physics/integrator.hpp"
 
 using namespace rocksweep;
 

@@ -14,7 +14,7 @@
 #include <system_error>
 #include <vector>
 
-#include "rocksweep/errors.hpp"
+#include "rocksweep/core/errors.hpp"
 
 namespace rocksweep::testing {
 

@@ -1,10 +1,10 @@
-#include "rocksweep/work_part.hpp"
+#include "rocksweep/grid/work_part.hpp"
 
 #include <gtest/gtest.h>
 
 #include <vector>
 
-#include "rocksweep/errors.hpp"
+#include "rocksweep/core/errors.hpp"
 
 using namespace rocksweep;
 

@@ -10,8 +10,8 @@
 //                        in must end run() on every rank within 1 s, with no abandoned chunk sunk
 //   --mode throw-worker  compute throws on rank 1: the job must abort with "ERROR on rank 1"
 //   --mode throw-master  compute throws on rank 0: the job must abort with "ERROR on rank 0"
-#include "rocksweep/mpi_session.hpp"
-#include "rocksweep/scheduler.hpp"
+#include "rocksweep/parallel/mpi_session.hpp"
+#include "rocksweep/parallel/scheduler.hpp"
 
 #include <CLI/CLI.hpp>
 

@@ -1,0 +1,82 @@
+#pragma once
+/// The work list of a sweep: scenarios x amplitude x frequency, one cell per index.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "rocksweep/physics/anchorage.hpp"
+#include "rocksweep/physics/block.hpp"
+#include "rocksweep/physics/model.hpp"
+#include "rocksweep/physics/outcome.hpp"
+#include "rocksweep/physics/pulse_library.hpp"
+
+namespace rocksweep {
+
+/// Points evenly spaced on [lo, hi], both ends included (lo alone when points == 1).
+struct Axis {
+    double lo = 1.0, hi = 1.0;
+    std::size_t points = 1;
+    double at(std::size_t i) const;
+    std::vector<double> values() const;
+};
+
+/// One anchorage configuration of the sweep.
+struct Scenario {
+    std::string name;          ///< HDF5 group name under /spectra
+    Anchorage anchorage;
+    double theta_f_ratio = 0;  ///< theta_f / alpha of the (K_max) spring; 0 for free
+    double kmin_ratio = 1;     ///< K_min / K_max; 1 unless adaptive
+};
+
+/// Everything that defines the cells of a sweep.
+struct SweepSpec {
+    Block block{};
+    Equations equations = Equations::nonlinear;
+    double impact_threshold = 1e-3;  ///< fraction of p alpha
+    PulseFamily pulse_family = PulseFamily::one_sine;
+    int pulse_cycles = 1;            ///< n of n-sine and cycloidal-c
+    double phase = 0.0;              ///< psi [rad] (one-sine, n-sine)
+    double vertical_g = 0.0;         ///< a_v0 / g (one-sine, n-sine)
+    double vertical_phase = 0.0;     ///< psi_v [rad]
+    double friction = 0.0;           ///< mu_s of the base, to flag cells that would slide; 0: unchecked
+    Axis omega_ratio;                ///< omega_p / p (a rectangle lasts pi / omega_p)
+    Axis amplitude_ratio;            ///< a_p / (alpha g), a_p the peak ground acceleration
+    std::vector<Scenario> scenarios;
+
+    PulseShape pulse_shape() const { return {pulse_family, pulse_cycles, phase, vertical_g, vertical_phase}; }
+    std::size_t cells_per_scenario() const { return omega_ratio.points * amplitude_ratio.points; }
+    std::size_t cell_count() const { return cells_per_scenario() * scenarios.size(); }
+    /// index = scenario * (n_amp n_omega) + i_amp * n_omega + i_omega (C order per scenario).
+    CellModel cell(std::size_t index) const;
+};
+
+/// Result columns of a sweep, indexed like SweepSpec::cell.
+struct SweepResults {
+    std::vector<std::uint8_t> outcome;
+    std::vector<double> max_rotation;
+    std::vector<std::int32_t> impacts;
+    std::vector<std::int32_t> impacts_total;
+    std::vector<double> t_overturn;
+    std::vector<double> peak_force_ratio;
+    std::vector<std::uint8_t> broken;
+    std::vector<double> mu_required;
+    std::vector<std::uint8_t> pivot_uplift;
+    std::vector<std::uint8_t> done;  ///< 0 pending, 1 computed, 2 outcome inferred (refine.hpp)
+
+    void resize(std::size_t n);
+    /// Bytes one cell takes across the columns above: what rank 0 holds per cell of a sweep.
+    static constexpr std::size_t bytes_per_cell() {
+        return sizeof(std::uint8_t) * 4 + sizeof(double) * 4 + sizeof(std::int32_t) * 2;
+    }
+    std::size_t size() const { return outcome.size(); }
+    void store(std::size_t index, const CellResult& r);
+    std::size_t done_count() const;
+};
+
+/// Computes cells [first, first + count) of `spec` into `out`.
+struct IntegratorSettings;
+void compute_cells(const SweepSpec& spec, const IntegratorSettings& settings, std::size_t first,
+                   std::size_t count, CellResult* out, int lanes = 8);
+
+}  // namespace rocksweep

@@ -1,0 +1,45 @@
+#pragma once
+/// The design file: the criterion against the constant stiffness K and against K_min/K_max,
+/// the recommended values, the hazard region and the limits used. Layout: docs/design.md.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "rocksweep/design/design_criterion.hpp"
+#include "rocksweep/design/design_search.hpp"
+#include "rocksweep/io/spectra_file.hpp"
+#include "rocksweep/grid/sweep.hpp"
+
+namespace rocksweep {
+
+/// One design variable's curve, ascending in the variable.
+struct DesignCurve {
+    std::vector<double> variable;            ///< K [N/m], or K_min / K_max
+    std::vector<double> theta_f_ratio;       ///< theta_f / alpha of each constant K (empty for K_min / K_max)
+    std::vector<double> acceptable;          ///< the criterion
+    std::vector<double> standing;            ///< not overturned, limits ignored
+    std::vector<std::int32_t> round;         ///< search round that evaluated it: 0 the coarse one
+    std::size_t optimum = 0;                 ///< index of the recommended value (best_point)
+    std::size_t near_lo = 0, near_hi = 0;    ///< the run of values around it within DesignReport::near_optimal of its criterion
+};
+
+struct DesignReport {
+    SweepSpec hazard;                  ///< block and region; its scenarios are not written
+    DesignConstraints constraints;
+    double strength_n = 0.0;           ///< F_u [N]
+    double object_force_n = 0.0;       ///< the object's own force limit [N]; 0: none
+    double k_max_n_per_m = 0.0;        ///< the adaptive anchorage's K_max
+    double k_max_theta_f_ratio = 1.0;  ///< its theta_f / alpha
+    RegionScore free;                  ///< the free-standing block, the reference
+    DesignCurve constant, adaptive;
+    SearchSettings stiffness_search, kmin_search;  ///< x = log10 K [N/m], log10 (K_min / K_max)
+    double near_optimal = 0.0;         ///< margin of the near-optimal ranges
+    std::size_t refine_stride = 0;     ///< boundary refinement of each sweep; 0: every cell computed
+};
+
+/// Writes `path` atomically (publish_h5_atomically). Throws std::invalid_argument if a
+/// curve's columns differ in length or its optimum is out of range; std::runtime_error
+/// ("cannot write PATH: ...") for a failed write.
+void write_design(const std::string& path, const DesignReport& report, const Provenance& prov);
+
+}  // namespace rocksweep

@@ -1,0 +1,323 @@
+// `rocksweep design`: a search over the anchorage stiffness (and over K_min/K_max) in which
+// every evaluation is a sweep of the hazard region, run by the sweep command itself so that
+// MPI, checkpoints, signals, refinement and --resume behave exactly as for `rocksweep sweep`.
+#include "rocksweep/app/design_command.hpp"
+
+#include <CLI/CLI.hpp>
+#include <mpi.h>
+
+#include <algorithm>
+#include <cmath>
+#include <ctime>
+#include <iomanip>
+#include <optional>
+#include <sstream>
+#include <tuple>
+
+#include "rocksweep/design/design_criterion.hpp"
+#include "rocksweep/io/design_file.hpp"
+#include "rocksweep/design/design_search.hpp"
+#include "rocksweep/core/errors.hpp"
+#include "rocksweep/app/option_checks.hpp"
+#include "rocksweep/io/output_claim.hpp"
+
+#ifndef ROCKSWEEP_VERSION
+#define ROCKSWEEP_VERSION "unknown"
+#endif
+
+namespace rocksweep {
+
+void add_design_options(CLI::App& design, DesignCommand& cmd) {
+    const char* grp = "Design search";
+    design.add_option("--stiffness-range", cmd.stiffness_range,
+                      "Constant K searched from LO to HI [N/m] (default: the K whose theta_f at F_u is 4 alpha, at most pi/2, "
+                      "to that of alpha/16)")
+        ->expected(2)->check(number_in(1, 1e12, "N/m"))->group(grp);
+    design.add_option("--kmin-ratio-range", cmd.kmin_range, "K_min / K_max searched from LO to HI (K_max: --adaptive-theta-f-ratio)")
+        ->expected(2)->check(number_in(1e-6, 1, ""))->capture_default_str()->group(grp);
+    design.add_option("--coarse-points", cmd.coarse_points, "Values of the first round, log-spaced, both ends included")
+        ->check(integer_in(3, 1000))->capture_default_str()->group(grp);
+    design.add_option("--points-per-side", cmd.points_per_side, "Each later round: new values in each interval beside the best")
+        ->check(integer_in(1, 100))->capture_default_str()->group(grp);
+    design.add_option("--rounds", cmd.rounds, "Rounds after the coarse one (0: the coarse values only)")
+        ->check(integer_in(0, 50))->capture_default_str()->group(grp);
+    design.add_option("--tolerance", cmd.tolerance, "An interval narrower than this, in log10 of the value, is not split again")
+        ->check(number_in(1e-6, 1, "", true))->capture_default_str()->group(grp);
+    design.add_option("--max-rotation-ratio", cmd.max_rotation_ratio,
+                      "Acceptable only if max |theta| / alpha stays at most this (default: no limit)")
+        ->check(number_in(0, 1e3, "", true))->group(grp);
+    design.add_option("--object-force-ratio", cmd.object_force_ratio,
+                      "The object's own force limit / (m g): acceptable only if the anchorage's peak force does not exceed it "
+                      "(default: F_u alone)")
+        ->check(number_in(0, 1e3, "", true))->group(grp);
+    design.add_option("--near-optimal", cmd.near_optimal,
+                      "Report the range of values, around the best, whose safe fraction is within this of the best")
+        ->check(number_in(0, 1, ""))->capture_default_str()->group(grp);
+}
+
+void check_design_options(const CLI::App& app, const std::vector<std::string>& args) {
+    for (const char* opt : {"--anchorages", "--theta-f-ratios", "--kmin-ratios", "--scenario"}) {
+        const std::string name = opt;
+        const bool typed = std::any_of(args.begin(), args.end(),
+                                       [&](const std::string& a) { return a == name || a.rfind(name + "=", 0) == 0; });
+        if (!typed) continue;
+        std::string value;
+        for (const std::string& r : app.get_option(name)->results()) value += (value.empty() ? "" : " ") + r;
+        throw InputError(name.substr(2), value,
+                         "an option of sweep and info only; design chooses its scenarios (--stiffness-range, "
+                         "--kmin-ratio-range)");
+    }
+}
+
+namespace {
+
+/// What every rank derives from the options, identically, before any work.
+struct Problem {
+    SweepSpec hazard;  ///< block and region; scenarios are made per round
+    double strength_n = 0.0;
+    double k_max = 0.0;
+    SearchSettings stiffness, kmin;
+    DesignConstraints limits;
+};
+
+std::pair<double, double> range_of(const char* option, const std::vector<double>& v) {
+    if (v.size() != 2 || !(v[0] < v[1]))
+        throw InputError(option, v.size() == 2 ? format_short(v[0]) + " " + format_short(v[1]) : std::to_string(v.size()) + " values",
+                         "two values LO HI with LO < HI");
+    return {v[0], v[1]};
+}
+
+SearchSettings search_settings(const DesignCommand& cmd, std::pair<double, double> range) {
+    return SearchSettings{std::log10(range.first), std::log10(range.second), cmd.coarse_points, cmd.points_per_side,
+                          cmd.rounds, cmd.tolerance};
+}
+
+Problem make_problem(const Options& opts, const DesignCommand& cmd) {
+    Problem p;
+    Options one = opts;  // the block and the region, checked as a sweep checks them
+    one.grid.anchorages = {"free"};
+    one.grid.only.clear();
+    p.hazard = make_sweep_spec(one);
+    const Block& b = p.hazard.block;
+    p.strength_n = opts.anchorage.strength_ratio * b.mass_kg * b.gravity;
+    p.k_max = stiffness_from_strength(b, p.strength_n, opts.grid.adaptive_theta_f_ratio * b.alpha_rad);
+    std::pair<double, double> k{stiffness_from_strength(b, p.strength_n, std::min(4.0 * b.alpha_rad, M_PI / 2)),
+                                stiffness_from_strength(b, p.strength_n, b.alpha_rad / 16.0)};
+    if (!cmd.stiffness_range.empty()) k = range_of("stiffness-range", cmd.stiffness_range);
+    if (!(fracture_angle(b, p.strength_n, k.first) < 0.99 * M_PI))
+        throw InputError("stiffness-range", format_short(k.first) + " " + format_short(k.second),
+                         "LO large enough that F_u = " + format_short(p.strength_n, 6) + " N is reached before theta = pi");
+    p.stiffness = search_settings(cmd, k);
+    p.kmin = search_settings(cmd, range_of("kmin-ratio-range", cmd.kmin_range));
+    p.limits.max_rotation_ratio = cmd.max_rotation_ratio;
+    p.limits.max_force_ratio = cmd.object_force_ratio / opts.anchorage.strength_ratio;
+    const bool limited = cmd.max_rotation_ratio > 0.0 || cmd.object_force_ratio > 0.0;
+    if (limited && cmd.run.refine_stride != 0)
+        throw InputError("refine", std::to_string(cmd.run.refine_stride),
+                         "0 with --max-rotation-ratio or --object-force-ratio (refinement infers outcomes only; a limit "
+                         "needs every cell's rotation and force)");
+    return p;
+}
+
+/// Values a round sweeps, as log10 of K and of K_min / K_max (the search's axis).
+struct RoundValues {
+    std::vector<double> log_k, log_rho;
+    bool empty() const { return log_k.empty() && log_rho.empty(); }
+};
+
+double rho_of(double log_rho) { return std::min(1.0, std::pow(10.0, log_rho)); }
+
+/// A round's sweep: the free block (round 0, the reference), a constant anchorage per K —
+/// at a fixed F_u, K fixes theta_f = 2 atan(F_u / (4 b K)) — and an adaptive one per ratio.
+Options round_options(const Options& base, const Problem& p, const RoundValues& v, bool with_free) {
+    Options o = base;
+    const Block& b = p.hazard.block;
+    o.grid.only.clear();
+    o.grid.anchorages.clear();
+    o.grid.theta_f_ratios.clear();
+    o.grid.kmin_ratios.clear();
+    if (with_free) o.grid.anchorages.push_back("free");
+    if (!v.log_k.empty()) o.grid.anchorages.push_back("constant");
+    if (!v.log_rho.empty()) o.grid.anchorages.push_back("adaptive");
+    for (double x : v.log_k) o.grid.theta_f_ratios.push_back(fracture_angle(b, p.strength_n, std::pow(10.0, x)) / b.alpha_rad);
+    for (double x : v.log_rho) o.grid.kmin_ratios.push_back(rho_of(x));
+    return o;
+}
+
+/// OUT.h5 -> OUT.roundN.h5, beside it.
+std::string round_path(const std::string& output, int round) {
+    std::string stem = output;
+    if (stem.size() > 3 && stem.compare(stem.size() - 3, 3, ".h5") == 0) stem.resize(stem.size() - 3);
+    return stem + ".round" + std::to_string(round) + ".h5";
+}
+
+/// A value evaluated, on rank 0.
+struct Evaluation {
+    double x = 0.0;         ///< the search's axis
+    double variable = 0.0;  ///< K [N/m] of the scenario, or K_min / K_max
+    double theta_f_ratio = 0.0;
+    RegionScore score;
+    int round = 0;
+};
+
+/// Rank 0's record of the search.
+struct Ledger {
+    std::optional<RegionScore> free;
+    std::vector<Evaluation> constant, adaptive;
+
+    static std::vector<SearchPoint> points(const std::vector<Evaluation>& e) {
+        std::vector<SearchPoint> p;
+        for (const Evaluation& x : e) p.push_back({x.x, x.score.acceptable});
+        return p;
+    }
+
+    /// Scores the round's sweep, read back from its file (scenarios in round_options' order).
+    void add_round(const Options& round_opts, const RoundValues& v, const std::string& path, const IntegratorSettings& settings,
+                   const DesignConstraints& limits, int round) {
+        const SweepSpec spec = make_sweep_spec(round_opts);
+        const SweepResults r = read_spectra_results(path, spec, settings);
+        std::size_t s = 0;
+        if (round == 0) free = score_scenario(spec, r, s++, limits);
+        for (double x : v.log_k) {
+            const Scenario& sc = spec.scenarios[s];
+            constant.push_back({x, sc.anchorage.k_max, sc.theta_f_ratio, score_scenario(spec, r, s++, limits), round});
+        }
+        for (double x : v.log_rho) adaptive.push_back({x, rho_of(x), 0.0, score_scenario(spec, r, s++, limits), round});
+    }
+};
+
+DesignCurve curve_of(std::vector<Evaluation> e, bool with_theta_f, double near_optimal) {
+    std::stable_sort(e.begin(), e.end(), [](const Evaluation& a, const Evaluation& b) { return a.x < b.x; });
+    DesignCurve c;
+    std::vector<SearchPoint> pts;
+    for (const Evaluation& x : e) {
+        c.variable.push_back(x.variable);
+        if (with_theta_f) c.theta_f_ratio.push_back(x.theta_f_ratio);
+        c.acceptable.push_back(x.score.acceptable);
+        c.standing.push_back(x.score.standing);
+        c.round.push_back(x.round);
+        pts.push_back({x.x, x.score.acceptable});
+    }
+    c.optimum = best_point(pts);
+    std::tie(c.near_lo, c.near_hi) = near_best(pts, c.optimum, near_optimal);
+    return c;
+}
+
+void broadcast(std::vector<double>& v, const MpiSession& mpi) {
+    if (mpi.size() == 1) return;
+    unsigned long long n = v.size();
+    MPI_Bcast(&n, 1, MPI_UNSIGNED_LONG_LONG, 0, mpi.comm());
+    v.resize(n);
+    if (n > 0) MPI_Bcast(v.data(), static_cast<int>(n), MPI_DOUBLE, 0, mpi.comm());
+}
+
+int broadcast(int x, const MpiSession& mpi) {
+    if (mpi.size() > 1) MPI_Bcast(&x, 1, MPI_INT, 0, mpi.comm());
+    return x;
+}
+
+std::string utc_now() {
+    const std::time_t now = std::time(nullptr);
+    std::ostringstream out;
+    out << std::put_time(std::gmtime(&now), "%FT%TZ");  // one thread: gmtime's static buffer is ours
+    return out.str();
+}
+
+/// Claims the design's output on rank 0 (the rounds claim their own files); an existing
+/// output is refused unless --resume or --overwrite says what to do with it.
+void claim_output(std::optional<OutputClaim>& claim, const SweepCommand& run) {
+    if (run.resume && run.overwrite) throw InputError("resume", "with --overwrite", "one of --resume, --overwrite");
+    claim.emplace("output", run.output);
+    if (claim->exists() && !run.resume && !run.overwrite)
+        throw InputError("output", run.output, "a new file; it exists: pass --resume to continue its design or --overwrite to replace it");
+}
+
+void print_summary(std::ostream& log, const DesignReport& r) {
+    const DesignCurve &c = r.constant, &a = r.adaptive;
+    log << std::setprecision(4) << "design: safe fraction of the region, free-standing " << r.free.acceptable << "\n"
+        << "  constant K:    best K = " << c.variable[c.optimum] << " N/m (theta_f = " << c.theta_f_ratio[c.optimum]
+        << " alpha), safe fraction " << c.acceptable[c.optimum] << " (" << c.variable.size() << " values; within "
+        << r.near_optimal << " of it from " << c.variable[c.near_lo] << " to " << c.variable[c.near_hi] << ")\n"
+        << "  adaptive:      best K_min/K_max = " << a.variable[a.optimum] << " (K_max = " << r.k_max_n_per_m
+        << " N/m), safe fraction " << a.acceptable[a.optimum] << " (" << a.variable.size() << " values; within "
+        << r.near_optimal << " of it from " << a.variable[a.near_lo] << " to " << a.variable[a.near_hi] << ")\n";
+}
+
+}  // namespace
+
+int run_design(const Options& opts, const DesignCommand& cmd, const std::string& config_text, const MpiSession& mpi) {
+    const Problem problem = make_problem(opts, cmd);  // the same on every rank, so is any error
+    const IntegratorSettings settings = make_settings(opts.numerics);
+    RootStream log(mpi);
+
+    std::optional<OutputClaim> claim;
+    int verdict = 0;
+    if (mpi.is_root()) {
+        try {
+            claim_output(claim, cmd.run);
+        } catch (const InputError& e) {
+            claim.reset();
+            verdict = 2;
+            log << "rocksweep: error: " << cli_message(e) << "\n";
+        }
+    }
+    if ((verdict = broadcast(verdict, mpi)) != 0) return verdict;
+
+    const double t0 = MPI_Wtime();
+    const BracketSearch by_k(problem.stiffness), by_rho(problem.kmin);
+    RoundValues values{by_k.first_round(), by_rho.first_round()};
+    Ledger ledger;
+    for (int round = 0; !values.empty(); ++round) {
+        const Options round_opts = round_options(opts, problem, values, round == 0);
+        SweepCommand run = cmd.run;
+        run.output = round_path(cmd.run.output, round);
+        if (!cmd.run.quiet)
+            log << "design round " << round << ": " << values.log_k.size() << " values of K, " << values.log_rho.size()
+                << " of K_min/K_max -> " << run.output << "\n";
+        const int status = broadcast(run_sweep(round_opts, run, config_text, mpi), mpi);
+        if (status != 0) {
+            if (status != 2) log << "design stopped in round " << round << "; rerun it with --resume to continue\n";
+            return mpi.is_root() ? status : 0;
+        }
+        if (mpi.is_root()) {
+            ledger.add_round(round_opts, values, run.output, settings, problem.limits, round);
+            values.log_k = by_k.next_round(round + 1, Ledger::points(ledger.constant));
+            values.log_rho = by_rho.next_round(round + 1, Ledger::points(ledger.adaptive));
+        }
+        broadcast(values.log_k, mpi);
+        broadcast(values.log_rho, mpi);
+    }
+    if (!mpi.is_root()) return 0;
+
+    DesignReport report;
+    report.hazard = problem.hazard;
+    report.constraints = problem.limits;
+    report.strength_n = problem.strength_n;
+    report.object_force_n = cmd.object_force_ratio * problem.hazard.block.mass_kg * problem.hazard.block.gravity;
+    report.k_max_n_per_m = problem.k_max;
+    report.k_max_theta_f_ratio = opts.grid.adaptive_theta_f_ratio;
+    report.free = *ledger.free;
+    report.constant = curve_of(ledger.constant, true, cmd.near_optimal);
+    report.adaptive = curve_of(ledger.adaptive, false, cmd.near_optimal);
+    report.near_optimal = cmd.near_optimal;
+    report.stiffness_search = problem.stiffness;
+    report.kmin_search = problem.kmin;
+    report.refine_stride = cmd.run.refine_stride;
+    const Provenance prov{ROCKSWEEP_VERSION, config_text, utc_now(), mpi.size(), MPI_Wtime() - t0};
+    try {
+        write_design(cmd.run.output, report, prov);
+    } catch (const InputError& e) {  // the output's directory went away during the run
+        log << "rocksweep: error: " << cli_message(e) << "\n";
+        return 2;
+    } catch (const std::runtime_error& e) {
+        log << "rocksweep: error: " << e.what() << "\n";
+        return 1;
+    }
+    if (!cmd.run.quiet) {
+        print_summary(log, report);
+        log << "wrote " << cmd.run.output << "\n";
+    }
+    return 0;
+}
+
+}  // namespace rocksweep

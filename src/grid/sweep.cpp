@@ -1,0 +1,72 @@
+#include "rocksweep/grid/sweep.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <vector>
+
+#include "rocksweep/physics/integrator.hpp"
+
+namespace rocksweep {
+
+double Axis::at(std::size_t i) const {
+    if (points <= 1) return lo;
+    if (i + 1 == points) return hi;  // both ends exactly as given
+    return lo + (hi - lo) * static_cast<double>(i) / static_cast<double>(points - 1);
+}
+
+std::vector<double> Axis::values() const {
+    std::vector<double> v(points);
+    for (std::size_t i = 0; i < points; ++i) v[i] = at(i);
+    return v;
+}
+
+CellModel SweepSpec::cell(std::size_t index) const {
+    const std::size_t per = cells_per_scenario();
+    const Scenario& sc = scenarios.at(index / per);
+    const std::size_t in = index % per;
+    const double w_ratio = omega_ratio.at(in % omega_ratio.points);
+    const double a_ratio = amplitude_ratio.at(in / omega_ratio.points);
+    // a_p / g = (a_p / (alpha g)) alpha
+    const Pulse pulse = make_pulse(pulse_shape(), a_ratio * block.alpha_rad, w_ratio * block.p());
+    return make_cell_model(block, sc.anchorage, pulse, equations, impact_threshold);
+}
+
+void SweepResults::resize(std::size_t n) {
+    outcome.assign(n, 0);
+    max_rotation.assign(n, NAN);
+    impacts.assign(n, 0);
+    impacts_total.assign(n, 0);
+    t_overturn.assign(n, NAN);
+    peak_force_ratio.assign(n, NAN);
+    broken.assign(n, 0);
+    mu_required.assign(n, NAN);
+    pivot_uplift.assign(n, 0);
+    done.assign(n, 0);
+}
+
+void SweepResults::store(std::size_t i, const CellResult& r) {
+    outcome[i] = static_cast<std::uint8_t>(r.outcome);
+    max_rotation[i] = r.max_rotation;
+    impacts[i] = r.impacts;
+    impacts_total[i] = r.impacts_total;
+    t_overturn[i] = r.t_overturn_s;
+    peak_force_ratio[i] = r.peak_force_ratio;
+    broken[i] = r.broken;
+    mu_required[i] = r.mu_required;
+    pivot_uplift[i] = r.pivot_uplift;
+    done[i] = 1;
+}
+
+std::size_t SweepResults::done_count() const {
+    return static_cast<std::size_t>(std::count_if(done.begin(), done.end(), [](std::uint8_t d) { return d != 0; }));
+}
+
+void compute_cells(const SweepSpec& spec, const IntegratorSettings& settings, std::size_t first,
+                   std::size_t count, CellResult* out, int lanes) {
+    std::vector<CellModel> cells(count);
+    for (std::size_t i = 0; i < count; ++i) cells[i] = spec.cell(first + i);
+    integrate_cells(cells, std::span<CellResult>(out, count), settings, lanes);
+}
+
+}  // namespace rocksweep

@@ -1,0 +1,67 @@
+#include "rocksweep/parallel/mpi_session.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+#include <stdexcept>
+#include <string>
+
+namespace rocksweep {
+
+namespace {
+
+bool mpi_active() noexcept {
+    int initialized = 0, finalized = 0;
+    MPI_Initialized(&initialized);
+    MPI_Finalized(&finalized);
+    return initialized && !finalized;
+}
+
+}  // namespace
+
+MpiSession::MpiSession(int& argc, char**& argv) {
+    int initialized = 0;
+    MPI_Initialized(&initialized);
+    if (!initialized) {
+        if (MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &thread_level_) != MPI_SUCCESS)
+            throw std::runtime_error("MPI_Init_thread failed");
+        owns_mpi_ = true;
+    } else {
+        MPI_Query_thread(&thread_level_);
+    }
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+    MPI_Comm_size(MPI_COMM_WORLD, &size_);
+}
+
+MpiSession::~MpiSession() {
+    if (!owns_mpi_) return;
+    int finalized = 0;
+    MPI_Finalized(&finalized);
+    if (!finalized) MPI_Finalize();
+}
+
+void MpiSession::abort(int code) const noexcept {
+    std::fflush(stdout);
+    std::fflush(stderr);
+    if (mpi_active()) MPI_Abort(MPI_COMM_WORLD, code);
+    std::abort();  // MPI_Abort does not return; this is only reached without MPI
+}
+
+void abort_on_error(int rank, const std::exception& error, MPI_Comm comm) noexcept {
+    abort_on_error(rank, std::string_view(error.what()), comm);
+}
+
+void abort_on_error(int rank, std::string_view what, MPI_Comm comm) noexcept {
+    // One fprintf so that the line is not interleaved with other ranks' output.
+    std::fflush(stdout);
+    std::fprintf(stderr, "ERROR on rank %d: %.*s\n", rank, static_cast<int>(what.size()), what.data());
+    std::fflush(stderr);
+    if (mpi_active()) MPI_Abort(comm, 1);
+    std::abort();
+}
+
+RootStream::RootStream(bool active, std::ostream& target) : std::ostream(nullptr), active_(active) {
+    rdbuf(active ? target.rdbuf() : &null_);  // also clears the badbit set by the null buffer above
+    flags(target.flags());
+}
+
+}  // namespace rocksweep

@@ -1,0 +1,197 @@
+#pragma once
+// The W-lane RK4 step of the kernel: the equation of motion, written once, and one classical
+// RK4 step per lane over a batch of cells. Knows the ground only through the families'
+// lane() functions (excitation/*.hpp); the event logic is the Lane state machine's
+// (integrator.cpp).
+#include <array>
+#include <cstdlib>
+#include <type_traits>
+
+#include "rocksweep/physics/excitation.hpp"
+#include "rocksweep/physics/fastmath.hpp"
+
+namespace rocksweep::kernel {
+
+// ---- The lane arithmetic, branch-free: selects are written as exact arithmetic on 0/1 factors
+// (x * 1 = x, x * 0 + y = y for finite x and y != 0), so that GCC vectorises the lane loop
+// (a ternary between computed values would put the sin/cos under a branch) and a lane gives the
+// same bits whether it runs alone or in a vector. Values that the scalar code set to 0.0 are
+// made exactly +0.0 by adding +0.0. sin/cos: rocksweep::fastmath (odd/even bitwise).
+
+/// Coefficients of the equation of motion in one lane as doubles (side +-1, flags 0/1).
+struct LaneCoef {
+    double p2, alpha, kappa, side, linear, spring;
+};
+
+/// theta'' on side s (physics.md §3, Eq. 7 and 9 with the restoring factor s):
+/// -p^2 [(1 + ay) sin(s alpha - theta) + ax cos(s alpha - theta)] - s kappa sin(s theta / 2).
+/// Written on s theta rather than |theta| so that a trial step just past theta = 0 stays smooth.
+template <bool with_spring = true>
+[[gnu::always_inline]] inline double rhs(const LaneCoef& c, const Ground& g, double theta) {
+    const double s = c.side;
+    const double a = s * c.alpha - theta;
+    const double nl = 1.0 - c.linear;
+    double sa, ca;
+    fastmath::sincos(a, sa, ca);
+    const double sn = a * c.linear + sa * nl;
+    const double cs = c.linear + ca * nl;
+    double spring = 0.0;  // kappa = 0: +0, as the scalar code
+    if constexpr (with_spring) {
+        const double h = 0.5 * s * theta;
+        const double sp = h * c.linear + fastmath::sin(h) * nl;
+        spring = sp * c.spring + 0.0;
+    }
+    return -c.p2 * ((1.0 + g.ay) * sn + g.ax * cs) - s * c.kappa * spring;
+}
+
+/// Per-lane coefficients of one step (as Lane writes them).
+struct RhsLane {
+    double p2, alpha, kappa;
+    double t_cut;  ///< ground moves at stage times t < t_cut
+    int side;
+    bool linear;
+    const Pulse* pulse = nullptr;  ///< its family and kind
+    GroundLane ground;             ///< its family's lane coefficients
+};
+
+inline LaneCoef coef(const RhsLane& l) {
+    return {l.p2, l.alpha, l.kappa, static_cast<double>(l.side), l.linear ? 1.0 : 0.0, l.kappa == 0.0 ? 0.0 : 1.0};
+}
+
+/// A batch whose lanes are not all of one vectorised family (records, or a mix): each lane
+/// takes its own family's ground, outside the vector loop, with the same lane() as alone.
+struct PerLane {};
+
+/// One classical RK4 step per lane; y = (theta, theta_dot). The lane loop is branch-free
+/// and vectorised for one analytic family; every lane computes the same operation sequence
+/// as W = 1.
+template <int W>
+struct Batch {
+    std::array<RhsLane, W> c{};  ///< written by Lane::prepare
+    std::array<double, W> t0{}, y0{}, v0{}, dt{}, y1{}, v1{}, a0{};
+
+    /// The coefficients as structure of arrays, and the in-pulse factors of the stage times.
+    struct Soa {
+        alignas(64) double p2[W], alpha[W], kappa[W], side[W], linear[W], spring[W];
+        alignas(64) double ax_g[W], ay_g[W], omega[W], phase[W], phase_y[W], t_ref[W];
+        alignas(64) double in0[W], inm[W], in1[W];
+    } k{};
+
+    /// Batch-uniform shortcuts, which give the same bits per lane as the full computation:
+    /// no lane in the pulse (every ground value +0), no lane with a vertical component (ay +0),
+    /// no lane with a spring (spring term +0).
+    void step() {
+        bool any_in = false, any_y = false, any_k = false, mixed = false;
+        const Pulse* first = nullptr;  // of the first lane that ever held a cell
+        for (int i = W - 1; i >= 0; --i)
+            if (c[i].pulse) first = c[i].pulse;
+        for (int i = 0; i < W; ++i) {
+            const LaneCoef l = coef(c[i]);
+            k.p2[i] = l.p2; k.alpha[i] = l.alpha; k.kappa[i] = l.kappa;
+            k.side[i] = l.side; k.linear[i] = l.linear; k.spring[i] = l.spring;
+            const GroundLane& g = c[i].ground;
+            k.ax_g[i] = g.ax_g; k.ay_g[i] = g.ay_g; k.omega[i] = g.omega;
+            k.phase[i] = g.phase; k.phase_y[i] = g.phase_y; k.t_ref[i] = g.t_ref;
+            const double h = dt[i], t = t0[i];
+            k.in0[i] = t < c[i].t_cut ? 1.0 : 0.0;
+            k.inm[i] = t + 0.5 * h < c[i].t_cut ? 1.0 : 0.0;
+            k.in1[i] = t + h < c[i].t_cut ? 1.0 : 0.0;
+            any_in |= t < c[i].t_cut;  // dt >= 0: the later stage times are not earlier
+            any_y |= g.ay_g != 0.0;
+            any_k |= c[i].kappa != 0.0;
+            mixed |= c[i].pulse && c[i].pulse->kind != first->kind;
+        }
+        if (mixed) return lanes<PerLane, true, true, true>(*this);
+        visit(*first, [&](const auto& e) {
+            using F = std::decay_t<decltype(e)>;
+            if constexpr (F::vectorised) family<F>(any_in, any_in && any_y, any_k);
+            else lanes<PerLane, true, true, true>(*this);
+        });
+    }
+
+    template <class F>
+    void family(bool in, bool y, bool spring) {
+        const int variant = (in ? 1 : 0) + (y ? 2 : 0) + (spring ? 4 : 0);
+        // Same operations either way (AVX2 without FMA, -ffp-contract=off): same bits.
+        if (use_avx2()) {
+            switch (variant) {
+                case 0: return lanes_avx2<F, false, false, false>(*this);
+                case 1: return lanes_avx2<F, true, false, false>(*this);
+                case 3: return lanes_avx2<F, true, true, false>(*this);
+                case 4: return lanes_avx2<F, false, false, true>(*this);
+                case 5: return lanes_avx2<F, true, false, true>(*this);
+                default: return lanes_avx2<F, true, true, true>(*this);
+            }
+        }
+        switch (variant) {
+            case 0: return lanes<F, false, false, false>(*this);
+            case 1: return lanes<F, true, false, false>(*this);
+            case 3: return lanes<F, true, true, false>(*this);
+            case 4: return lanes<F, false, false, true>(*this);
+            case 5: return lanes<F, true, false, true>(*this);
+            default: return lanes<F, true, true, true>(*this);
+        }
+    }
+
+    static bool use_avx2() {
+#if defined(__x86_64__) || defined(__i386__)
+        static const bool yes = W > 1 && __builtin_cpu_supports("avx2") && !std::getenv("ROCKSWEEP_NO_AVX2");
+        return yes;
+#else
+        return false;
+#endif
+    }
+
+    template <class F, bool with_y>
+    [[gnu::always_inline]] inline Ground ground(int i, const GroundLane& g, double t, double in) const {
+        if constexpr (std::is_same_v<F, PerLane>) {
+            if (!c[i].pulse) return Ground{};  // a lane that never held a cell
+            return visit(*c[i].pulse, [&](const auto& e) {
+                return std::decay_t<decltype(e)>::template lane<true>(c[i].ground, t, in);
+            });
+        } else {
+            return F::template lane<with_y>(g, t, in);
+        }
+    }
+
+    template <class F, bool pulse, bool with_y, bool spring>
+    [[gnu::always_inline]] static inline void lanes_body(Batch& b) {
+        for (int i = 0; i < W; ++i) {
+            const LaneCoef l{b.k.p2[i], b.k.alpha[i], b.k.kappa[i], b.k.side[i], b.k.linear[i], b.k.spring[i]};
+            GroundLane gl;
+            gl.ax_g = b.k.ax_g[i]; gl.ay_g = b.k.ay_g[i]; gl.omega = b.k.omega[i];
+            gl.phase = b.k.phase[i]; gl.phase_y = b.k.phase_y[i]; gl.t_ref = b.k.t_ref[i];
+            const double h = b.dt[i], t = b.t0[i], y = b.y0[i], v = b.v0[i];
+            // The ground at t, t + h/2 (shared by k2 and k3) and t + h.
+            Ground g0, gm, g1;
+            if constexpr (pulse) {
+                g0 = b.template ground<F, with_y>(i, gl, t, b.k.in0[i]);
+                gm = b.template ground<F, with_y>(i, gl, t + 0.5 * h, b.k.inm[i]);
+                g1 = b.template ground<F, with_y>(i, gl, t + h, b.k.in1[i]);
+            }
+            // k1 = f(t, y)
+            const double k1y = v, k1v = rhs<spring>(l, g0, y);
+            // k2 = f(t + h/2, y + h/2 k1)
+            const double k2y = v + 0.5 * h * k1v, k2v = rhs<spring>(l, gm, y + 0.5 * h * k1y);
+            // k3 = f(t + h/2, y + h/2 k2)
+            const double k3y = v + 0.5 * h * k2v, k3v = rhs<spring>(l, gm, y + 0.5 * h * k2y);
+            // k4 = f(t + h, y + h k3)
+            const double k4y = v + h * k3v, k4v = rhs<spring>(l, g1, y + h * k3y);
+            b.y1[i] = y + h / 6.0 * (k1y + 2.0 * k2y + 2.0 * k3y + k4y);
+            b.v1[i] = v + h / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
+            b.a0[i] = k1v;
+        }
+    }
+    template <class F, bool pulse, bool with_y, bool spring>
+    static void lanes(Batch& b) { lanes_body<F, pulse, with_y, spring>(b); }
+    // The same loop compiled for AVX2 (no FMA: the bits stay those of the baseline build).
+#if defined(__x86_64__) || defined(__i386__)
+    template <class F, bool pulse, bool with_y, bool spring>
+    __attribute__((target("avx2"))) static void lanes_avx2(Batch& b) { lanes_body<F, pulse, with_y, spring>(b); }
+#else
+    template <class F, bool pulse, bool with_y, bool spring>
+    static void lanes_avx2(Batch& b) { lanes_body<F, pulse, with_y, spring>(b); }
+#endif
+};
+
+}  // namespace rocksweep::kernel

@@ -1,0 +1,181 @@
+#include "rocksweep/physics/energy.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "rocksweep/physics/fastmath.hpp"
+
+namespace rocksweep {
+
+namespace {
+
+bool linear(const CellModel& m) { return m.equations == Equations::linearised; }
+
+/// dV/dphi of gravity plus a spring of coefficient kappa.
+double potential_slope(const CellModel& m, double kappa, double phi) {
+    if (linear(m)) return m.p2 * (m.alpha - phi) + 0.5 * kappa * phi;
+    return m.p2 * std::sin(m.alpha - phi) + kappa * std::sin(0.5 * phi);
+}
+
+double potential(const CellModel& m, double kappa, double phi) {
+    return gravity_potential(m, phi) + spring_potential(m, kappa, phi);
+}
+
+/// V and dV/dphi together, from one sincos of (alpha - phi) and one of phi/4: the Newton
+/// iteration of a swing's peak calls this, and it is the energy decision's main cost.
+void potential_and_slope(const CellModel& m, double kappa, double phi, double& v, double& dv) {
+    if (linear(m)) {
+        v = potential(m, kappa, phi);
+        dv = potential_slope(m, kappa, phi);
+        return;
+    }
+    double sa, ca, sq, cq;
+    fastmath::sincos(m.alpha - phi, sa, ca);
+    fastmath::sincos(0.25 * phi, sq, cq);
+    v = m.p2 * (ca - m.cos_alpha) + 4.0 * kappa * sq * sq;
+    dv = m.p2 * sa + kappa * 2.0 * sq * cq;
+}
+
+}  // namespace
+
+double gravity_potential(const CellModel& m, double phi) {
+    if (linear(m)) return m.p2 * (m.alpha * phi - 0.5 * phi * phi);
+    return m.p2 * (std::cos(m.alpha - phi) - m.cos_alpha);
+}
+
+double spring_potential(const CellModel& m, double kappa, double phi) {
+    if (kappa == 0.0) return 0.0;
+    if (linear(m)) return 0.25 * kappa * phi * phi;
+    // Integral of the Eq. 8 moment, kappa sin(phi/2): the potential the integrated equation of
+    // motion conserves (the strain energy in tan^2(phi/2) agrees with it to O(phi^4)).
+    const double s = std::sin(0.25 * phi);
+    return 4.0 * kappa * s * s;  // = 2 kappa (1 - cos(phi/2)), without cancellation
+}
+
+Swing outward_swing(const CellModel& m, double ke, double kappa_out, double kappa_in,
+                    double break_angle) {
+    Swing sw;
+    const double cap = std::min(break_angle, M_PI / 2);
+    // The first maximum of V on [0, cap]: V rises on [0, alpha], and without a spring it falls
+    // after; a spring can keep it rising past alpha. A block that turns before that maximum
+    // never meets what lies beyond it.
+    double lim = cap;
+    if (kappa_out == 0.0) {
+        lim = std::min(cap, m.alpha);
+    } else if (m.alpha < cap && potential_slope(m, kappa_out, cap) < 0.0) {
+        double lo = m.alpha, hi = cap;
+        constexpr int scan = 32;  // V' may dip and rise: take its first zero
+        for (int i = 1; i <= scan; ++i) {
+            const double x = m.alpha + (cap - m.alpha) * i / scan;
+            if (potential_slope(m, kappa_out, x) < 0.0) { hi = x; break; }
+            lo = x;
+        }
+        for (int i = 0; i < 100 && hi - lo > 1e-15; ++i) {
+            const double mid = 0.5 * (lo + hi);
+            (potential_slope(m, kappa_out, mid) > 0.0 ? lo : hi) = mid;
+        }
+        lim = lo;
+    }
+    if (!(ke < potential(m, kappa_out, lim))) return sw;
+    // V(peak) = ke on [0, lim], where V rises: Newton from the small-angle estimate, kept
+    // inside a shrinking bracket (bisection when a Newton step leaves it).
+    double lo = 0.0, hi = lim;
+    const double a = m.p2 * m.alpha, c = 0.5 * m.p2 - 0.25 * kappa_out;  // V ~ a phi - c phi^2
+    double x = (c > 0.0 && a * a > 4.0 * c * ke) ? 2.0 * ke / (a + std::sqrt(a * a - 4.0 * c * ke)) : ke / a;
+    if (!(x > lo && x < hi)) x = 0.5 * (lo + hi);
+    for (int i = 0; i < 100; ++i) {
+        double v, slope;
+        potential_and_slope(m, kappa_out, x, v, slope);
+        const double f = v - ke;
+        (f < 0.0 ? lo : hi) = x;
+        double next = slope > 0.0 ? x - f / slope : 0.5 * (lo + hi);
+        if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+        const bool converged = std::abs(next - x) <= 4e-16 * x || hi - lo <= 4e-16 * hi;
+        x = next;
+        if (converged) break;
+    }
+    sw.bounded = true;
+    sw.peak = x;
+    // Coming back with kappa_in: the spring releases only what K_min stores at the peak.
+    sw.ke_return = ke + spring_potential(m, kappa_in, sw.peak) - spring_potential(m, kappa_out, sw.peak);
+    return sw;
+}
+
+Works step_works(const CellModel& m, double k_n_m, const StepEnds& step, double t) {
+    Works w;
+    const double h = t - step.t0;
+    if (!(h > 0.0)) return w;
+    // Gauss-Legendre nodes on [-1, 1]: 0, +-sqrt(3/5), weights 8/9, 5/9.
+    constexpr double x[3] = {-0.7745966692414834, 0.0, 0.7745966692414834};
+    constexpr double wt[3] = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};
+    const double b = m.half_width_m, t_end = m.pulse.end_time();
+    for (int i = 0; i < 3; ++i) {
+        const double tn = step.t0 + 0.5 * h * (1.0 + x[i]);
+        double th, thd;
+        step.at(tn, th, thd);
+        const double phi = std::abs(th), sgn = th > 0.0 ? 1.0 : (th < 0.0 ? -1.0 : 0.0);
+        const double ax = tn < t_end ? m.pulse.ax(tn) : 0.0;
+        w.excitation_j += wt[i] * (-m.mass_kg * ax * m.gravity * m.radius_m * std::cos(m.alpha - phi) * thd);
+        w.anchorage_j += wt[i] * (-8.0 * b * b * k_n_m * std::sin(0.5 * phi) * sgn * thd);
+    }
+    w.excitation_j *= 0.5 * h;
+    w.anchorage_j *= 0.5 * h;
+    return w;
+}
+
+FreeFate free_fate(const CellModel& m, int side, double v, bool left_intact, bool right_intact) {
+    FreeFate f;
+    const bool anchored = m.anchorage != AnchorageKind::free;
+    auto spring = [&](int s, double& k_out, double& k_in, double& brk, double& fcoef) {
+        const bool intact = anchored && (s > 0 ? left_intact : right_intact);
+        k_out = intact ? m.kappa_max : 0.0;
+        k_in = intact ? m.kappa_min : 0.0;
+        brk = intact ? m.break_max : INFINITY;
+        fcoef = intact ? m.force_max : 0.0;
+    };
+    double ke = 0.5 * v * v;
+    int s = side;
+    bool last_nearly = false;
+    for (int swing = 0; swing < 1'000'000; ++swing) {
+        double k_out, k_in, brk, fcoef;
+        spring(s, k_out, k_in, brk, fcoef);
+        const double ke_in = ke;
+        const Swing sw = outward_swing(m, ke, k_out, k_in, brk);
+        if (!sw.bounded) return f;
+        f.max_phi = std::max(f.max_phi, sw.peak);
+        f.peak_force = std::max(f.peak_force, fcoef * std::tan(0.5 * sw.peak));
+        const double v_ret = std::sqrt(2.0 * sw.ke_return);
+        ++f.impacts_total;
+        if (v_ret < m.v_threshold) {
+            f.decided = true;
+            return f;
+        }
+        ++f.impacts;
+        ke = m.e * m.e * sw.ke_return;
+        s = -s;
+        // Once both sides have swung and the swings are conservative, every later swing is
+        // smaller than the last on its side and the approach speeds fall as v_ret e^k. An
+        // adaptive spring's switch loses energy ~ (K_max - K_min) phi^2 per swing, a vanishing
+        // fraction as the swings shrink: below 1e-3 of the swing's energy the sum of what is
+        // left moves the count by well under one impact, so the tail is taken as geometric.
+        double ko2, ki2, b2, f2;
+        spring(s, ko2, ki2, b2, f2);
+        const bool conservative = k_out == k_in && ko2 == ki2;
+        const bool nearly = ke_in - sw.ke_return <= 1e-3 * ke_in;  // this side's swing
+        const bool both_nearly = nearly && last_nearly;            // and the other side's
+        last_nearly = nearly;
+        if (swing >= 1 && (conservative || both_nearly)) {
+            const double ratio = v_ret / m.v_threshold;
+            auto n = static_cast<std::int32_t>(std::floor(std::log(ratio) / -std::log(m.e)));
+            while (n > 0 && v_ret * std::pow(m.e, n) < m.v_threshold) --n;
+            while (v_ret * std::pow(m.e, n + 1) >= m.v_threshold) ++n;
+            f.impacts += n;
+            f.impacts_total += n + 1;
+            f.decided = true;
+            return f;
+        }
+    }
+    return f;
+}
+
+}  // namespace rocksweep
