@@ -206,9 +206,15 @@ def figure(S, n_panels):
 
 def header(S, what):
     a = S["attrs"]
-    head = "{}: {}\n{}".format(
+    # The pulse family (files before the pulse library have none: the one-sine).
+    family = a.get("pulse") or "one-sine"
+    cycles = a.get("pulse_cycles")
+    if family in ("n-sine", "cycloidal-c") and cycles:
+        family += " (n = {})".format(int(cycles))
+    head = "{}: {}, {} pulses\n{}".format(
         "Overturning spectra" if what == "outcome" else "Spectra",
         what,
+        family,
         rsplot.block_words(a.get("half_width_m"), a.get("half_height_m"), a.get("alpha_rad"), a.get("p_rad_s")),
     )
     if a.get("complete") != 1:
