@@ -52,13 +52,11 @@ double spring_potential(const CellModel& m, double kappa, double phi) {
     return 4.0 * kappa * s * s;  // = 2 kappa (1 - cos(phi/2)), without cancellation
 }
 
-Swing outward_swing(const CellModel& m, double ke, double kappa_out, double kappa_in,
-                    double break_angle) {
-    Swing sw;
-    const double cap = std::min(break_angle, M_PI / 2);
-    // The first maximum of V on [0, cap]: V rises on [0, alpha], and without a spring it falls
-    // after; a spring can keep it rising past alpha. A block that turns before that maximum
-    // never meets what lies beyond it.
+namespace {
+
+/// The first maximum of V (gravity and a spring kappa) on [0, cap]: V rises on [0, alpha], and
+/// without a spring it falls after; a spring can keep it rising past alpha.
+double first_maximum(const CellModel& m, double kappa_out, double cap) {
     double lim = cap;
     if (kappa_out == 0.0) {
         lim = std::min(cap, m.alpha);
@@ -76,6 +74,17 @@ Swing outward_swing(const CellModel& m, double ke, double kappa_out, double kapp
         }
         lim = lo;
     }
+    return lim;
+}
+
+}  // namespace
+
+Swing outward_swing(const CellModel& m, double ke, double kappa_out, double kappa_in,
+                    double break_angle) {
+    Swing sw;
+    const double cap = std::min(break_angle, M_PI / 2);
+    // A block that turns before the first maximum never meets what lies beyond it.
+    const double lim = first_maximum(m, kappa_out, cap);
     if (!(ke < potential(m, kappa_out, lim))) return sw;
     // V(peak) = ke on [0, lim], where V rises: Newton from the small-angle estimate, kept
     // inside a shrinking bracket (bisection when a Newton step leaves it).
@@ -94,6 +103,11 @@ Swing outward_swing(const CellModel& m, double ke, double kappa_out, double kapp
         x = next;
         if (converged) break;
     }
+    // An adaptive spring that turns the block back with K_min must be able to: past the first
+    // maximum of the K_min potential (possible when K_max's spring breaks beyond it, e.g.
+    // theta_f = 2 alpha) the weaker spring lets gravity win, and the law then switches and
+    // chatters on its surface. Energy alone cannot tell the end: leave it to the integration.
+    if (kappa_in != kappa_out && !(x < first_maximum(m, kappa_in, cap))) return sw;
     sw.bounded = true;
     sw.peak = x;
     // Coming back with kappa_in: the spring releases only what K_min stores at the peak.
