@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <initializer_list>
 #include <cstdlib>
 #include <cstring>
 #include <cerrno>
@@ -512,38 +513,49 @@ void write_attribute(const Object& obj, std::string_view name,
     write_array_attribute(obj, name, values, H5T_STD_U8LE, H5T_NATIVE_UINT8);
 }
 
+namespace {
+
+/// A scalar attribute opened for reading, its file type, and its name for messages.
+struct ScalarAttribute {
+    std::string what;
+    Attribute a;
+    Datatype type;
+};
+
+/// Opens attribute `name` of `obj`; throws "...: `not_this`" unless its type class is one of
+/// `classes`, then requires it scalar (in that order, as the readers always checked).
+ScalarAttribute open_scalar_attribute(const Object& obj, std::string_view name,
+                                      std::initializer_list<H5T_class_t> classes, const char* not_this) {
+    ScalarAttribute r{"attribute " + in_quotes(name) + " of " + in_quotes(obj.name()), open_attribute(obj, name), {}};
+    r.type = Datatype(H5Aget_type(r.a.id()));
+    if (!r.type.valid()) fail("reading the type of " + r.what);
+    const H5T_class_t cls = H5Tget_class(r.type.id());
+    if (std::find(classes.begin(), classes.end(), cls) == classes.end()) throw Hdf5Error(r.what + ": " + not_this);
+    require_scalar(r.a, r.what);
+    return r;
+}
+
+}  // namespace
+
 double read_double_attribute(const Object& obj, std::string_view name) {
-    const std::string what = "attribute " + in_quotes(name) + " of " + in_quotes(obj.name());
-    const Attribute a = open_attribute(obj, name);
-    const Datatype type(H5Aget_type(a.id()));
-    if (!type.valid()) fail("reading the type of " + what);
-    const H5T_class_t cls = H5Tget_class(type.id());
-    if (cls != H5T_FLOAT && cls != H5T_INTEGER) throw Hdf5Error(what + ": not a number");
-    require_scalar(a, what);
+    const ScalarAttribute s = open_scalar_attribute(obj, name, {H5T_FLOAT, H5T_INTEGER}, "not a number");
     double value = 0.0;
-    check(H5Aread(a.id(), H5T_NATIVE_DOUBLE, &value), "reading " + what);
+    check(H5Aread(s.a.id(), H5T_NATIVE_DOUBLE, &value), "reading " + s.what);
     return value;
 }
 
 std::int64_t read_int64_attribute(const Object& obj, std::string_view name) {
-    const std::string what = "attribute " + in_quotes(name) + " of " + in_quotes(obj.name());
-    const Attribute a = open_attribute(obj, name);
-    const Datatype type(H5Aget_type(a.id()));
-    if (!type.valid()) fail("reading the type of " + what);
-    if (H5Tget_class(type.id()) != H5T_INTEGER) throw Hdf5Error(what + ": not an integer");
-    require_scalar(a, what);
+    const ScalarAttribute s = open_scalar_attribute(obj, name, {H5T_INTEGER}, "not an integer");
     std::int64_t value = 0;
-    check(H5Aread(a.id(), H5T_NATIVE_INT64, &value), "reading " + what);
+    check(H5Aread(s.a.id(), H5T_NATIVE_INT64, &value), "reading " + s.what);
     return value;
 }
 
 std::string read_string_attribute(const Object& obj, std::string_view name) {
-    const std::string what = "attribute " + in_quotes(name) + " of " + in_quotes(obj.name());
-    const Attribute a = open_attribute(obj, name);
-    const Datatype type(H5Aget_type(a.id()));
-    if (!type.valid()) fail("reading the type of " + what);
-    if (H5Tget_class(type.id()) != H5T_STRING) throw Hdf5Error(what + ": not a string");
-    require_scalar(a, what);
+    const ScalarAttribute opened = open_scalar_attribute(obj, name, {H5T_STRING}, "not a string");
+    const std::string& what = opened.what;
+    const Attribute& a = opened.a;
+    const Datatype& type = opened.type;
 
     const htri_t variable = check(H5Tis_variable_str(type.id()), "reading " + what);
     if (variable > 0) {
