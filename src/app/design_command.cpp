@@ -19,6 +19,7 @@
 #include "rocksweep/design/design_search.hpp"
 #include "rocksweep/core/errors.hpp"
 #include "rocksweep/app/option_checks.hpp"
+#include "rocksweep/app/run_support.hpp"
 #include "rocksweep/io/output_claim.hpp"
 
 #ifndef ROCKSWEEP_VERSION
@@ -214,13 +215,6 @@ void broadcast(std::vector<double>& v, const MpiSession& mpi) {
 int broadcast(int x, const MpiSession& mpi) {
     if (mpi.size() > 1) MPI_Bcast(&x, 1, MPI_INT, 0, mpi.comm());
     return x;
-}
-
-std::string utc_now() {
-    const std::time_t now = std::time(nullptr);
-    std::ostringstream out;
-    out << std::put_time(std::gmtime(&now), "%FT%TZ");  // one thread: gmtime's static buffer is ours
-    return out.str();
 }
 
 /// Claims the design's output on rank 0 (the rounds claim their own files); an existing

@@ -1,12 +1,11 @@
 // `rocksweep sweep`: build the work list, schedule it over the ranks, and keep rank 0's file
 // up to date so that nothing computed is lost to a kill.
-#include <csignal>
 #include <cstring>
-#include <ctime>
 #include <iostream>
 #include <optional>
 
 #include "rocksweep/app/cli.hpp"
+#include "rocksweep/app/run_support.hpp"
 #include "rocksweep/core/errors.hpp"
 #include "rocksweep/physics/integrator.hpp"
 #include "rocksweep/io/output_claim.hpp"
@@ -23,55 +22,6 @@
 namespace rocksweep {
 
 namespace {
-
-volatile std::sig_atomic_t g_signal = 0;
-extern "C" void note_signal(int sig) { g_signal = sig; }
-
-/// SIGINT/SIGTERM only raise a flag while a sweep runs (from before its output is claimed to the
-/// end of its last save, so a signal never kills a save half-way and leaves NAME.tmp): the
-/// integration polls it and gives up its chunk, rank 0 stops handing out work, gathers what is
-/// done and saves it.
-class SignalGuard {
-public:
-    SignalGuard() {
-        g_signal = 0;
-        struct sigaction sa{};
-        sa.sa_handler = note_signal;
-        sigemptyset(&sa.sa_mask);
-        sigaction(SIGINT, &sa, &old_int_);
-        sigaction(SIGTERM, &sa, &old_term_);
-    }
-    ~SignalGuard() {
-        sigaction(SIGINT, &old_int_, nullptr);
-        sigaction(SIGTERM, &old_term_, nullptr);
-    }
-    SignalGuard(const SignalGuard&) = delete;
-    SignalGuard& operator=(const SignalGuard&) = delete;
-
-private:
-    struct sigaction old_int_{}, old_term_{};
-};
-
-std::string utc_now() {
-    char buf[32];
-    const std::time_t t = std::time(nullptr);
-    std::tm tm{};
-    gmtime_r(&t, &tm);
-    std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
-    return buf;
-}
-
-std::vector<IndexRange> missing_ranges(const SweepResults& r) {
-    std::vector<IndexRange> todo;
-    for (std::size_t i = 0; i < r.size();) {
-        if (r.done[i]) { ++i; continue; }
-        std::size_t j = i;
-        while (j < r.size() && !r.done[j]) ++j;
-        todo.push_back({i, j - i});
-        i = j;
-    }
-    return todo;
-}
 
 /// Rank 0's view of the output before any work: the output held for this run, and where the
 /// results start from.
@@ -93,7 +43,7 @@ void prepare_output(Start& s, const SweepSpec& spec, const IntegratorSettings& s
     } else if (exists && !cmd.overwrite) {
         throw InputError("output", cmd.output, "a new file; it exists: pass --resume to continue it or --overwrite to replace it");
     }
-    s.todo = restrict_to_part(missing_ranges(s.results), part);
+    s.todo = restrict_to_part(missing_ranges(s.results.done), part);
     // A requeued job resumes a sweep (or its part) that already ended: saving again would only
     // replace its recorded wall time with this run's few milliseconds.
     s.complete = exists && cmd.resume && s.todo.empty();
@@ -117,7 +67,7 @@ int run_sweep(const Options& opts, const SweepCommand& cmd, const std::string& c
     if (part.count > 1 && cmd.refine_stride != 0)
         throw InputError("part", cmd.part, "not with --refine: refinement needs the whole grid between its passes");
     RootStream log(mpi);
-    const SignalGuard signals;
+    const StopSignals signals;
 
     // The output is claimed on rank 0 only; the verdict reaches every rank before any work.
     Start start;
@@ -171,7 +121,7 @@ int run_sweep(const Options& opts, const SweepCommand& cmd, const std::string& c
     so.record_bytes = sizeof(CellResult);
     so.max_chunk = cmd.max_chunk;
     so.min_chunk = std::min<std::size_t>(8, cmd.max_chunk);
-    so.stop_requested = [&] { return g_signal != 0 || !save_error.empty(); };
+    so.stop_requested = [&] { return StopSignals::received() != 0 || !save_error.empty(); };
     so.tick_interval_s = std::min(0.5, cmd.checkpoint_s / 2);
     so.on_tick = [&] {
         if (progress) progress->update(done_now);
@@ -179,7 +129,7 @@ int run_sweep(const Options& opts, const SweepCommand& cmd, const std::string& c
     };
     // A slow cell polls this every few hundred steps: a stop is honoured in the middle of a
     // chunk, which is then abandoned (not done) rather than finished.
-    settings.stop_requested = [&] { return g_signal != 0 || scheduler->stop_pending(); };
+    settings.stop_requested = [&] { return StopSignals::received() != 0 || scheduler->stop_pending(); };
     const int lanes = opts.numerics.lanes;
     const ComputeFn compute = [&](std::size_t first, std::size_t count, std::byte* out) {
         std::vector<CellResult> buf(count);
@@ -249,23 +199,21 @@ int run_sweep(const Options& opts, const SweepCommand& cmd, const std::string& c
         return 1;
     }
     const std::size_t done = results.done_count();
-    if (part.count > 1 && restrict_to_part(missing_ranges(results), part).empty()) {
+    if (part.count > 1 && restrict_to_part(missing_ranges(results.done), part).empty()) {
         if (!cmd.quiet)
             log << "wrote part " << part.index << " of " << part.count << " (" << cells_in_part(total, part) << " of "
                 << total << " cells) to " << cmd.output << "; join the parts with rocksweep merge\n";
         return 0;
     }
     if (done < total && part.count > 1) {
-        const int sig = g_signal ? g_signal : SIGINT;
-        log << "stopped by signal " << sig << ": part " << part.index << " of " << part.count << " not finished, "
+        log << "stopped by signal " << StopSignals::stopping_signal() << ": part " << part.index << " of " << part.count << " not finished, "
             << done << " cells saved in " << cmd.output << "; rerun with --resume to continue\n";
-        return 128 + sig;
+        return StopSignals::exit_status();
     }
     if (done < total) {
-        const int sig = g_signal ? g_signal : SIGINT;
-        log << "stopped by signal " << sig << ": " << done << " of " << total << " cells saved in " << cmd.output
+        log << "stopped by signal " << StopSignals::stopping_signal() << ": " << done << " of " << total << " cells saved in " << cmd.output
             << "; rerun with --resume to continue\n";
-        return 128 + sig;
+        return StopSignals::exit_status();
     }
     if (spec.friction > 0.0 && !cmd.quiet) {
         std::size_t slide = 0, jump = 0;
