@@ -58,16 +58,10 @@ CLI::App* add_basin_command(CLI::App& app, BasinCommand& cmd) {
 }
 
 void check_basin_options(const CLI::App& app, const std::vector<std::string>& args) {
-    for (const char* name : {"--omega-ratio-range", "--omega-ratio-points", "--amplitude-ratio-range", "--amplitude-ratio-points",
-                             "--phase", "--vertical-amplitude", "--vertical-phase", "--friction-coefficient"}) {
-        const std::string n = name;
-        for (const std::string& a : args)
-            if (a == n || a.rfind(n + "=", 0) == 0) {
-                std::string value;
-                for (const std::string& r : app.get_option(n)->results()) value += (value.empty() ? "" : " ") + r;
-                throw InputError(n.substr(2), value, "an option of sweep; basin starts free rocking with the ground at rest");
-            }
-    }
+    refuse_typed(app, args,
+                 {"--omega-ratio-range", "--omega-ratio-points", "--amplitude-ratio-range", "--amplitude-ratio-points", "--phase",
+                  "--vertical-amplitude", "--vertical-phase", "--friction-coefficient"},
+                 "an option of sweep; basin starts free rocking with the ground at rest");
 }
 
 int run_basin(const Options& o, const BasinCommand& cmd, const std::string& config_text) {

@@ -13,6 +13,7 @@
 #include "rocksweep/app/basin_command.hpp"
 #include "rocksweep/app/config_file.hpp"
 #include "rocksweep/app/design_command.hpp"
+#include "rocksweep/app/suite_command.hpp"
 #include "rocksweep/core/errors.hpp"
 #include "rocksweep/physics/history.hpp"
 #include "rocksweep/app/option_checks.hpp"
@@ -127,22 +128,6 @@ void add_model_options(CLI::App& app, Options& o) {
         ->check(integer_of({1, 4, 8, 16}))->capture_default_str()->group(num);
 }
 
-/// How a command that sweeps runs: its output, resume, progress, chunks, refinement.
-void add_run_options(CLI::App& sub, SweepCommand& cmd) {
-    sub.add_option("-o,--output", cmd.output, "Output HDF5 file")->required();
-    sub.add_flag("--resume", cmd.resume, "Continue the unfinished sweep in the output file");
-    sub.add_flag("--overwrite", cmd.overwrite, "Replace an existing output file");
-    sub.add_flag("-q,--quiet", cmd.quiet, "No progress output");
-    sub.add_option("--chunk", cmd.max_chunk, "Largest chunk of cells handed to a rank")
-        ->check(integer_in(1, 1 << 20))->capture_default_str();
-    sub.add_option("--refine", cmd.refine_stride,
-                   "Boundary refinement: compute every STRIDE-th cell, then only where outcomes differ, "
-                   "halving the spacing down to the full grid (0: compute every cell)")
-        ->check(integer_of({0, 2, 4, 8, 16, 32, 64, 128}))->capture_default_str();
-    sub.add_option("--checkpoint-interval", cmd.checkpoint_s, "Seconds between saves of the finished cells")
-        ->check(number_in(0.1, 86400, "s"))->capture_default_str();
-}
-
 /// A single history is cheap: unless the user chose them, `simulate` takes the accuracy that
 /// makes it a reference-grade history (kHistoryDefaults), not the sweep's. The defaults shown
 /// in the provenance follow, so that replaying it reproduces the history.
@@ -242,6 +227,22 @@ std::string parse_message(const CLI::App& app, const CLI::ParseError& e, const s
 
 }  // namespace
 
+void add_run_options(CLI::App& sub, SweepCommand& cmd) {
+    sub.add_option("-o,--output", cmd.output, "Output HDF5 file")->required();
+    sub.add_flag("--resume", cmd.resume, "Continue the unfinished sweep in the output file");
+    sub.add_flag("--overwrite", cmd.overwrite, "Replace an existing output file");
+    sub.add_flag("-q,--quiet", cmd.quiet, "No progress output");
+    sub.add_option("--chunk", cmd.max_chunk, "Largest chunk of cells handed to a rank")
+        ->check(integer_in(1, 1 << 20))->capture_default_str();
+    sub.add_option("--refine", cmd.refine_stride,
+                   "Boundary refinement: compute every STRIDE-th cell, then only where outcomes differ, "
+                   "halving the spacing down to the full grid (0: compute every cell)")
+        ->check(integer_of({0, 2, 4, 8, 16, 32, 64, 128}))->capture_default_str();
+    sub.add_option("--checkpoint-interval", cmd.checkpoint_s, "Seconds between saves of the finished cells")
+        ->check(number_in(0.1, 86400, "s"))->capture_default_str();
+}
+
+
 int run_cli(int argc, char** argv, const MpiSession& mpi) {
     RootStream err(mpi);
     Options opts;
@@ -327,10 +328,12 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
     add_design_options(*design, design_cmd);
     BasinCommand basin_cmd;
     CLI::App* basin = add_basin_command(app, basin_cmd);
-    for (CLI::App* sub : {sweep, merge, sim, info, design, basin})
+    SuiteCommand suite_cmd;
+    CLI::App* suite = add_suite_command(app, suite_cmd);
+    for (CLI::App* sub : {sweep, merge, sim, info, design, basin, suite})
         sub->footer("Block, pulse, anchorage, grid and numerics options (and --config): rocksweep --help");
 
-    const std::vector<std::string> subcommands{"sweep", "merge", "simulate", "info", "design", "basin"};
+    const std::vector<std::string> subcommands{"sweep", "merge", "simulate", "info", "design", "basin", "suite"};
     app.config_formatter(std::make_shared<TomlConfig>(subcommands, std::vector<std::string>{"block", "pulse", "anchorage", "grid", "numerics"},
                                                       [config] { return config->as<std::string>(); }));
     const std::vector<std::string> args(argv + (argc > 0 ? 1 : 0), argv + argc);
@@ -340,6 +343,7 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
         check_combinations(app, chosen->get_name(), opts, args);
         if (*design) check_design_options(app, args);
         if (*basin) check_basin_options(app, args);
+        if (*suite) check_suite_options(app, args, suite_cmd);
     } catch (const CLI::Success& e) {  // --help, --help-all, --version: to stdout, once
         if (mpi.is_root()) app.exit(e);
         return 0;
@@ -369,6 +373,7 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
             return run_merge(opts, merge_cmd, config_text);
         }
         if (*basin) return mpi.is_root() ? run_basin(opts, basin_cmd, config_text) : 0;
+        if (*suite) return run_suite(opts, suite_cmd, config_text, mpi);
         return run_sweep(opts, sweep_cmd, config_text, mpi);
     } catch (const InputError& e) {
         err << "rocksweep: error: " << cli_message(e) << "\n";

@@ -57,17 +57,8 @@ void add_design_options(CLI::App& design, DesignCommand& cmd) {
 }
 
 void check_design_options(const CLI::App& app, const std::vector<std::string>& args) {
-    for (const char* opt : {"--anchorages", "--theta-f-ratios", "--kmin-ratios", "--scenario"}) {
-        const std::string name = opt;
-        const bool typed = std::any_of(args.begin(), args.end(),
-                                       [&](const std::string& a) { return a == name || a.rfind(name + "=", 0) == 0; });
-        if (!typed) continue;
-        std::string value;
-        for (const std::string& r : app.get_option(name)->results()) value += (value.empty() ? "" : " ") + r;
-        throw InputError(name.substr(2), value,
-                         "an option of sweep and info only; design chooses its scenarios (--stiffness-range, "
-                         "--kmin-ratio-range)");
-    }
+    refuse_typed(app, args, {"--anchorages", "--theta-f-ratios", "--kmin-ratios", "--scenario"},
+                 "an option of sweep and info only; design chooses its scenarios (--stiffness-range, --kmin-ratio-range)");
 }
 
 namespace {

@@ -1,5 +1,6 @@
 #include "rocksweep/app/option_checks.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -121,6 +122,18 @@ CLI::Validator existing_file(const std::string& what) {
             return {};
         },
         "FILE", "existing_file");
+}
+
+void refuse_typed(const CLI::App& app, const std::vector<std::string>& args, const std::vector<std::string>& options,
+                  const std::string& why) {
+    for (const std::string& name : options) {
+        const bool typed = std::any_of(args.begin(), args.end(),
+                                       [&](const std::string& a) { return a == name || a.rfind(name + "=", 0) == 0; });
+        if (!typed) continue;
+        std::string value;
+        for (const std::string& r : app.get_option(name)->results()) value += (value.empty() ? "" : " ") + r;
+        throw InputError(name.substr(2), value, why);
+    }
 }
 
 }  // namespace rocksweep

@@ -91,22 +91,6 @@ AdaptiveLaw parse_adaptive_law(const std::string& s) {
     throw InputError("adaptive-law", s, "one of paper, passive");
 }
 
-Axis make_axis(const std::string& name, const std::vector<double>& range, std::size_t points) {
-    if (range.size() != 2) throw InputError(name + "-range", std::to_string(range.size()) + " values", "two values LO HI");
-    const double lo = range[0], hi = range[1];
-    const std::string shown = format_short(lo) + " " + format_short(hi);
-    if (!(std::isfinite(lo) && std::isfinite(hi) && lo > 0.0))
-        throw InputError(name + "-range", shown, "finite LO HI with 0 < LO <= HI");
-    if (hi < lo) throw InputError(name + "-range", shown, "LO <= HI (the grid is reversed)");
-    if (points < 1) throw InputError(name + "-points", std::to_string(points), "an integer >= 1");
-    if (hi == lo && points > 1)
-        throw InputError(name + "-range", shown, "LO < HI when " + name + "-points > 1 (the grid is empty)");
-    // A one-point axis would silently drop HI: the user meant something else.
-    if (hi != lo && points == 1)
-        throw InputError(name + "-range", shown, "LO = HI when --" + name + "-points is 1 (one point has no HI)");
-    return Axis{lo, hi, points};
-}
-
 std::string tidy(double x, int digits) {
     char buf[40];
     std::snprintf(buf, sizeof buf, "%.*g", digits, x);
@@ -127,6 +111,22 @@ std::vector<std::string> distinct_tidy(const std::vector<double>& v) {
 }
 
 }  // namespace
+
+Axis make_axis(const std::string& name, const std::vector<double>& range, std::size_t points) {
+    if (range.size() != 2) throw InputError(name + "-range", std::to_string(range.size()) + " values", "two values LO HI");
+    const double lo = range[0], hi = range[1];
+    const std::string shown = format_short(lo) + " " + format_short(hi);
+    if (!(std::isfinite(lo) && std::isfinite(hi) && lo > 0.0))
+        throw InputError(name + "-range", shown, "finite LO HI with 0 < LO <= HI");
+    if (hi < lo) throw InputError(name + "-range", shown, "LO <= HI (the grid is reversed)");
+    if (points < 1) throw InputError(name + "-points", std::to_string(points), "an integer >= 1");
+    if (hi == lo && points > 1)
+        throw InputError(name + "-range", shown, "LO < HI when " + name + "-points > 1 (the grid is empty)");
+    // A one-point axis would silently drop HI: the user meant something else.
+    if (hi != lo && points == 1)
+        throw InputError(name + "-range", shown, "LO = HI when --" + name + "-points is 1 (one point has no HI)");
+    return Axis{lo, hi, points};
+}
 
 Equations parse_equations(const std::string& s) {
     if (s == "nonlinear") return Equations::nonlinear;
@@ -293,6 +293,11 @@ bool defines_run(const std::string& command, const std::string& name, const Opti
     // Kept out, these would also make a replay overwrite, resume or fall silent.
     static const std::set<std::string> invocation{"output", "resume", "overwrite", "quiet"};
     if (invocation.count(name)) return false;
+    // A suite's ground motions are its records: the pulse and the spectra grid do not apply.
+    static const std::set<std::string> pulse_and_grid{"pulse", "cycles", "phase", "vertical-amplitude", "vertical-phase",
+                                                       "omega-ratio-range", "omega-ratio-points", "amplitude-ratio-range",
+                                                       "amplitude-ratio-points", "refine"};
+    if (command == "suite" && pulse_and_grid.count(name)) return false;
     const bool sweep = command != "simulate";
     const auto& kinds = o.grid.anchorages;
     const auto swept = [&](const char* kind) { return sweep && std::find(kinds.begin(), kinds.end(), kind) != kinds.end(); };

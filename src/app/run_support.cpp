@@ -1,6 +1,10 @@
 #include "rocksweep/app/run_support.hpp"
 
+#include <cstring>
 #include <ctime>
+
+#include "rocksweep/core/errors.hpp"
+#include "rocksweep/physics/integrator.hpp"
 
 namespace rocksweep {
 
@@ -25,6 +29,47 @@ StopSignals::~StopSignals() {
 
 int StopSignals::received() { return g_signal; }
 int StopSignals::stopping_signal() { return g_signal ? g_signal : SIGINT; }
+
+OutputVerdict agree_on_output(const MpiSession& mpi, std::ostream& log, const std::function<bool()>& prepare,
+                              const std::function<void()>& release) {
+    int verdict = static_cast<int>(OutputVerdict::go);
+    std::string why;
+    if (mpi.is_root()) {
+        try {
+            if (prepare()) verdict = static_cast<int>(OutputVerdict::nothing_to_do);
+        } catch (const InputError& e) {
+            release();
+            verdict = static_cast<int>(OutputVerdict::refused);
+            why = cli_message(e);
+        }
+    }
+    verdict = mpi.broadcast_from_root(verdict);
+    if (!why.empty()) log << "rocksweep: error: " << why << "\n";
+    return static_cast<OutputVerdict>(verdict);
+}
+
+ComputeFn cell_results_compute(std::function<void(std::size_t, std::size_t, CellResult*)> compute) {
+    return [compute = std::move(compute)](std::size_t first, std::size_t count, std::byte* out) {
+        std::vector<CellResult> buf(count);
+        try {
+            compute(first, count, buf.data());
+        } catch (const Interrupted&) {
+            throw ChunkAbandoned();
+        }
+        std::memcpy(out, buf.data(), count * sizeof(CellResult));
+    };
+}
+
+SinkFn cell_results_sink(SweepResults& results, std::size_t& done) {
+    return [&results, &done](std::size_t first, std::size_t count, const std::byte* records) {
+        for (std::size_t i = 0; i < count; ++i) {
+            CellResult r;
+            std::memcpy(&r, records + i * sizeof(CellResult), sizeof r);
+            results.store(first + i, r);
+        }
+        done += count;
+    };
+}
 
 std::string utc_now() {
     char buf[32];

@@ -36,22 +36,49 @@ std::size_t GridGroup::cell_count() const {
 }
 
 template <h5::Element T>
-h5::Dataset GridGroup::write(std::string_view name, std::span<const T> values) const {
-    const std::vector<hsize_t> dims = grid_dims(axes_);
+h5::Dataset GridGroup::write_axes(std::string_view name, std::span<const T> values,
+                                  const std::vector<std::size_t>& which) const {
+    std::vector<hsize_t> dims;
+    for (std::size_t a : which) dims.push_back(axes_[a].values.size());
     h5::Dataset ds = h5::write_dataset<T>(group_, name, values, dims);
     std::string names;
-    for (unsigned d = 0; d < scales_.size(); ++d) {
-        h5::attach_scale(ds, scales_[d], d);
-        names += (names.empty() ? "" : ", ") + axes_[d].name;
+    for (unsigned d = 0; d < which.size(); ++d) {
+        h5::attach_scale(ds, scales_[which[d]], d);
+        names += (names.empty() ? "" : ", ") + axes_[which[d]].name;
     }
     // The order in words, for readers that show neither scales nor netCDF dimensions.
     h5::write_attribute(ds, "dimensions", names);
     return ds;
 }
 
-template h5::Dataset GridGroup::write<double>(std::string_view, std::span<const double>) const;
-template h5::Dataset GridGroup::write<std::int32_t>(std::string_view, std::span<const std::int32_t>) const;
-template h5::Dataset GridGroup::write<std::uint8_t>(std::string_view, std::span<const std::uint8_t>) const;
+template <h5::Element T>
+h5::Dataset GridGroup::write(std::string_view name, std::span<const T> values) const {
+    std::vector<std::size_t> all(axes_.size());
+    for (std::size_t a = 0; a < all.size(); ++a) all[a] = a;
+    return write_axes(name, values, all);
+}
+
+template <h5::Element T>
+h5::Dataset GridGroup::write_on(std::string_view name, std::span<const T> values,
+                                std::initializer_list<std::string_view> axis_names) const {
+    std::vector<std::size_t> which;
+    for (std::string_view n : axis_names) {
+        std::size_t a = 0;
+        while (a < axes_.size() && axes_[a].name != n) ++a;
+        if (a == axes_.size()) throw std::invalid_argument("GridGroup::write_on: no axis " + std::string(n));
+        which.push_back(a);
+    }
+    return write_axes(name, values, which);
+}
+
+#define ROCKSWEEP_GRID_WRITERS(T)                                                                              \
+    template h5::Dataset GridGroup::write<T>(std::string_view, std::span<const T>) const;                      \
+    template h5::Dataset GridGroup::write_on<T>(std::string_view, std::span<const T>,                          \
+                                                std::initializer_list<std::string_view>) const;
+ROCKSWEEP_GRID_WRITERS(double)
+ROCKSWEEP_GRID_WRITERS(std::int32_t)
+ROCKSWEEP_GRID_WRITERS(std::uint8_t)
+#undef ROCKSWEEP_GRID_WRITERS
 
 std::string axes_difference(const h5::Group& group, std::span<const GridAxis> axes) {
     for (const GridAxis& a : axes) {

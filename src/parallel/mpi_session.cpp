@@ -39,6 +39,13 @@ MpiSession::~MpiSession() {
     if (!finalized) MPI_Finalize();
 }
 
+int MpiSession::broadcast_from_root(int value) const {
+    if (size_ > 1) MPI_Bcast(&value, 1, MPI_INT, 0, MPI_COMM_WORLD);
+    return value;
+}
+
+double MpiSession::wall_time() noexcept { return MPI_Wtime(); }
+
 void MpiSession::abort(int code) const noexcept {
     std::fflush(stdout);
     std::fflush(stderr);

@@ -108,8 +108,8 @@ bad_input(grid_option_for_simulate "--omega-ratio-range = 1 2 is invalid: an opt
           simulate --config ${CFG} --omega-ratio-range 1 2 -o ${OUT})
 
 # Command words and counts.
-bad_input(misspelled_subcommand "'swep' is not a command of rocksweep: one of sweep, merge, simulate, info, design, basin" swep --config ${CFG} -o ${OUT})
-bad_input(no_subcommand "a command is required: one of sweep, merge, simulate, info, design, basin" --config ${CFG})
+bad_input(misspelled_subcommand "'swep' is not a command of rocksweep: one of sweep, merge, simulate, info, design, basin, suite" swep --config ${CFG} -o ${OUT})
+bad_input(no_subcommand "a command is required: one of sweep, merge, simulate, info, design, basin, suite" --config ${CFG})
 bad_input(simulate_option_for_sweep "'--anchorage' is not an option of rocksweep sweep" sweep --config ${CFG} -o ${OUT} --anchorage free)
 bad_input(sweep_pulse_family "--pulse = sine is invalid: not a known word; allowed: one of one-sine, n-sine, cycloidal-a"
           sweep --config ${CFG} -o ${OUT} --pulse sine)
@@ -143,7 +143,7 @@ add_test(NAME cli.bad_input.config_bom_in_key
                  ${OUT} -- ${RS} sweep --config ${B}/bom_in_key.toml -o ${OUT})
 string(ASCII 1 CTRL)
 bad_config(control_in_key "1: expected '=' after a key, found byte 0x01" "mass${CTRL}x = 1\n")
-bad_config(unknown_table "2: table \\[foo\\] is not one of rocksweep's: \\[sweep\\], \\[merge\\], \\[simulate\\], \\[info\\], \\[design\\], \\[basin\\], \\[block\\]"
+bad_config(unknown_table "2: table \\[foo\\] is not one of rocksweep's: \\[sweep\\], \\[merge\\], \\[simulate\\], \\[info\\], \\[design\\], \\[basin\\], \\[suite\\], \\[block\\]"
            "mass = 1\n[foo]\n")
 bad_config(misplaced_underscore "1: '3__361' is not a number \\(an underscore must sit between two digits\\)" "mass = 3__361\n")
 bad_config(unclosed_array "2: an array without its closing '\\]'" "mass = 1\nkmin-ratios = [0.5,\n 0.1\n")
@@ -209,3 +209,21 @@ add_test(NAME cli.close_kmin_ratios_are_distinct_scenarios
 set_tests_properties(cli.close_kmin_ratios_are_distinct_scenarios PROPERTIES
   PASS_REGULAR_EXPRESSION "2 scenarios.*adaptive_rho0.1 +adaptive.*adaptive_rho0.1000001 +adaptive")
 add_test(NAME cli.version_on_stdout COMMAND bash -c "out=$(\"$0\" --version 2>/dev/null) && [[ $out == 'rocksweep '[0-9]* ]]" ${RS})
+
+# rocksweep suite: its own options, and the spectra options it would otherwise ignore.
+set(SUITE ${PROJECT_SOURCE_DIR}/configs/records_suite.csv)
+bad_input(suite_measure "--intensity-measure = sa is invalid: not a known word; allowed: one of pga, pgv, pga-ratio, scale"
+          suite --config ${CFG} --suite ${SUITE} --intensity-measure sa -o ${OUT})
+bad_input(suite_missing "--suite is required" suite --config ${CFG} -o ${OUT})
+bad_input(suite_no_such_file "--suite = /no/such.csv is invalid: no such file" suite --config ${CFG} --suite /no/such.csv -o ${OUT})
+bad_input(suite_refine "--refine = 8 is invalid: 0 for suite" suite --config ${CFG} --suite ${SUITE} --refine 8 -o ${OUT})
+bad_input(suite_spectra_grid "--omega-ratio-points = 5 is invalid: an option of sweep; the suite's ground motions are its records"
+          suite --config ${CFG} --suite ${SUITE} --omega-ratio-points 5 -o ${OUT})
+bad_input(suite_radius_points "--radius-points = 3 is invalid: 1 without --radius-range"
+          suite --config ${CFG} --suite ${SUITE} --radius-points 3 -o ${OUT})
+bad_input(suite_zero_level "--intensity-range = 0 is invalid: out of range; allowed: a number in \\(0, 1000\\]"
+          suite --config ${CFG} --suite ${SUITE} --intensity-range 0 1 -o ${OUT})
+bad_input(suite_reversed_radii "--radius-range = 2 1 is invalid: LO <= HI"
+          suite --config ${CFG} --suite ${SUITE} --radius-range 2 1 --radius-points 3 -o ${OUT})
+bad_input(suite_damage_state "--damage-states = -1 is invalid: out of range; allowed: a number in \\(0, 1000\\]"
+          suite --config ${CFG} --suite ${SUITE} --damage-states -1 -o ${OUT})

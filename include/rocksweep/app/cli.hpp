@@ -1,5 +1,7 @@
 #pragma once
 /// The command line: `rocksweep sweep | simulate | info`, options from flags and TOML files.
+#include <CLI/CLI.hpp>
+
 #include <string>
 #include <vector>
 
@@ -20,6 +22,9 @@ struct SweepCommand {
     std::size_t refine_stride = 0;  ///< 0: every cell; else boundary refinement from this spacing
     std::string part;  ///< "K/N": compute only part K of N (a job array); empty: every cell
 };
+
+/// How a command that sweeps runs: its output, resume, progress, chunks, refinement, checkpoints.
+void add_run_options(CLI::App& sub, SweepCommand& cmd);
 
 /// Runs a sweep on every rank of `mpi`; rank 0 writes `cmd.output`. Returns the exit status.
 int run_sweep(const Options& opts, const SweepCommand& cmd, const std::string& config_text,

@@ -22,6 +22,13 @@ CLI::Validator one_of(std::vector<std::string> allowed);
 /// The name of an existing regular file: not empty, not a directory. `what` names its content.
 CLI::Validator existing_file(const std::string& what);
 
+/// Throws InputError for the first of `options` ("--phase", ...) typed on the command line
+/// (`args`, without the program name), with its value(s) and `why` it does not apply: a
+/// command refuses what it would otherwise silently ignore. Values from a config file are not
+/// typed and pass (a config shared between commands holds options of each).
+void refuse_typed(const CLI::App& app, const std::vector<std::string>& args, const std::vector<std::string>& options,
+                  const std::string& why);
+
 /// 1e+12 -> "1e12", 0.001 -> "0.001", 3.14159265 -> "3.14159": how ranges are written.
 std::string format_bound(double x);
 

@@ -78,6 +78,9 @@ struct Options {
 /// Throws InputError naming the option, the value and the allowed range.
 Block make_block(const BlockOptions& o);
 Equations parse_equations(const std::string& s);
+/// The axis --NAME-range LO HI with --NAME-points points; throws InputError naming the option
+/// for a reversed, empty, non-positive or one-point-with-two-ends grid.
+Axis make_axis(const std::string& name, const std::vector<double>& range, std::size_t points);
 IntegratorSettings make_settings(const NumericsOptions& o);
 SweepSpec make_sweep_spec(const Options& o);
 /// How `simulate --record ...` asks for its record to be read (record.hpp).

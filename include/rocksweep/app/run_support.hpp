@@ -3,9 +3,13 @@
 /// that stop it cleanly, the time stamp of its provenance, and the cells still to compute.
 #include <csignal>
 #include <cstdint>
+#include <functional>
+#include <ostream>
 #include <string>
 #include <vector>
 
+#include "rocksweep/grid/sweep.hpp"
+#include "rocksweep/parallel/mpi_session.hpp"
 #include "rocksweep/parallel/scheduler.hpp"
 
 namespace rocksweep {
@@ -32,6 +36,22 @@ public:
 private:
     struct sigaction old_int_{}, old_term_{};
 };
+
+/// What every rank does after rank 0 looked at the output.
+enum class OutputVerdict { go, nothing_to_do, refused };
+
+/// Rank 0 calls `prepare`, which claims and reads the output and returns true if there is
+/// nothing left to do (a finished run resumed), or throws InputError; `release` then gives the
+/// output up before the message. Every rank learns the verdict; a refusal is printed once, by
+/// rank 0, as "rocksweep: error: ...". Collective.
+OutputVerdict agree_on_output(const MpiSession& mpi, std::ostream& log, const std::function<bool()>& prepare,
+                              const std::function<void()>& release);
+
+/// The scheduler's side of a computation of cells: `compute(first, count, out)` fills `count`
+/// CellResults; an integration interrupted by a stop request gives its chunk up (ChunkAbandoned).
+ComputeFn cell_results_compute(std::function<void(std::size_t first, std::size_t count, CellResult* out)> compute);
+/// Stores each finished chunk in `results` (rank 0) and adds its cells to `done`.
+SinkFn cell_results_sink(SweepResults& results, std::size_t& done);
 
 /// Now as ISO 8601 UTC, e.g. 2026-11-24T00:15:07Z.
 std::string utc_now();

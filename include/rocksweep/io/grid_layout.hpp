@@ -6,6 +6,7 @@
 ///
 /// The list of axes alone drives the layout: a grid of N axes needs no new code here.
 /// Only rocksweep_io includes this header.
+#include <initializer_list>
 #include <span>
 #include <string>
 #include <string_view>
@@ -40,7 +41,17 @@ public:
     template <h5::Element T>
     h5::Dataset write(std::string_view name, std::span<const T> values) const;
 
+    /// The same over some of the axes only, named in C order (e.g. {"record", "radius_m"} of a
+    /// group over record, radius_m and intensity): a summary beside the full grid.
+    /// Throws std::invalid_argument for a name that is not an axis of the group.
+    template <h5::Element T>
+    h5::Dataset write_on(std::string_view name, std::span<const T> values,
+                         std::initializer_list<std::string_view> axis_names) const;
+
 private:
+    template <h5::Element T>
+    h5::Dataset write_axes(std::string_view name, std::span<const T> values, const std::vector<std::size_t>& which) const;
+
     const h5::Group& group_;
     std::span<const GridAxis> axes_;
     std::vector<h5::Dataset> scales_;

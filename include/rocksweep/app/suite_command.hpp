@@ -1,0 +1,36 @@
+#pragma once
+/// `rocksweep suite`: every record of a suite, scaled to each intensity level, on each block
+/// size, for each anchorage scenario of the config; the results, the overturning spectra and
+/// the fragility curves in one HDF5 file (docs/suite.md).
+#include <CLI/CLI.hpp>
+
+#include <string>
+#include <vector>
+
+#include "rocksweep/app/cli.hpp"
+#include "rocksweep/app/options.hpp"
+
+namespace rocksweep {
+
+struct SuiteCommand {
+    SweepCommand run;  ///< output, resume, chunks, checkpoints (refinement and parts: not here)
+    std::string suite;
+    std::string measure = "pga";
+    std::vector<double> intensity_range{0.05, 1.5};
+    std::size_t intensity_points = 30;
+    std::vector<double> radius_range;  ///< empty: the block's own R
+    std::size_t radius_points = 1;
+    std::vector<double> damage_states{0.1, 0.3, 0.5};  ///< theta_max / alpha; overturning is always added
+};
+
+/// Adds `suite` and its own options to `app`; the model options are the app's (fallthrough).
+CLI::App* add_suite_command(CLI::App& app, SuiteCommand& cmd);
+
+/// Refuses, naming it, an option typed on the command line that the suite would ignore (the
+/// pulse and the spectra grid, refinement).
+void check_suite_options(const CLI::App& app, const std::vector<std::string>& args, const SuiteCommand& cmd);
+
+/// Runs the suite on every rank of `mpi`; rank 0 writes `cmd.run.output`. Returns the exit status.
+int run_suite(const Options& opts, const SuiteCommand& cmd, const std::string& config_text, const MpiSession& mpi);
+
+}  // namespace rocksweep

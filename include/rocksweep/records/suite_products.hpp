@@ -1,0 +1,40 @@
+#pragma once
+/// What a finished suite sweep answers, read off its results (docs/suite.md): the
+/// overturning-acceleration spectrum of each record, and the fragility curves of each
+/// anchorage. The IDA curves are the results themselves (max_rotation against the level).
+/// A run that did not converge (outcome 255) is no observation: it is left out of both.
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "rocksweep/grid/sweep.hpp"
+#include "rocksweep/records/fragility.hpp"
+#include "rocksweep/records/suite_sweep.hpp"
+
+namespace rocksweep {
+
+/// Per record and block size, [record, radius] in C order. Overturning is not monotonic in the
+/// scale: `safe_above` says whether a level above the first overturning one leaves the block up.
+struct OverturningSpectrum {
+    std::vector<double> first_intensity;  ///< lowest level that overturns; NaN if none does
+    std::vector<double> first_pga_g;      ///< the record's PGA at that level [standard g]; NaN if none
+    std::vector<double> below_intensity;  ///< the level before it; NaN if none or first is the lowest
+    std::vector<std::uint8_t> safe_above;
+};
+
+/// Of scenario `s` of a complete sweep (`r` holds spec.cell_count() cells).
+OverturningSpectrum overturning_spectrum(const SuiteSpec& spec, const SweepResults& r, std::size_t s);
+
+/// Per damage state, block size and level: the stripes over the records, and a lognormal fit
+/// per state and size.
+struct SuiteFragility {
+    std::vector<DamageState> states;
+    std::vector<std::int32_t> exceed, total;  ///< [state, radius, level]: runs reaching it, converged runs
+    std::vector<FragilityFit> fits;           ///< [state, radius]
+};
+
+/// Of scenario `s` of a complete sweep.
+SuiteFragility suite_fragility(const SuiteSpec& spec, const SweepResults& r, std::size_t s,
+                               const std::vector<DamageState>& states);
+
+}  // namespace rocksweep

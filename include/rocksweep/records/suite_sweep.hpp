@@ -1,0 +1,73 @@
+#pragma once
+/// The work list of a sweep over a record suite: scenario x record x block size x intensity,
+/// one cell per index. Each record is scaled so that its intensity measure equals the level
+/// (Vamvatsikos & Cornell's IDA scaling), and the block is scaled at fixed slenderness and
+/// density (R, and m ∝ R³), so every cell depends only on its index.
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "rocksweep/grid/sweep.hpp"
+#include "rocksweep/records/intensity.hpp"
+#include "rocksweep/records/record_suite.hpp"
+
+namespace rocksweep {
+
+/// What the intensity axis measures. Levels are values of it; a record at level x is the record
+/// times x / (its own measure).
+enum class IntensityMeasure {
+    pga_g,      ///< peak ground acceleration / standard g
+    pgv_m_s,    ///< peak ground velocity [m/s]
+    pga_ratio,  ///< PGA / (g tan alpha), the block's own g and alpha
+    scale,      ///< the factor itself
+};
+/// "pga", "pgv", "pga-ratio", "scale" (the option's words); throws InputError(field, text, ...).
+IntensityMeasure parse_intensity_measure(const std::string& field, const std::string& text);
+/// The dataset name of the measure: "pga_g", "pgv_m_s", "pga_ratio", "scale".
+std::string to_string(IntensityMeasure m);
+const char* intensity_units(IntensityMeasure m);
+const char* intensity_long_name(IntensityMeasure m);
+
+/// One record of the suite as every cell sees it: its samples (standard g, the suite's own
+/// scale applied) and its measures, read once.
+struct SuiteMember {
+    SuiteRecord entry;
+    Record record;
+    IntensityMeasures measures;
+};
+
+struct SuiteSpec {
+    Block block{};  ///< as configured; the size axis scales it
+    Equations equations = Equations::nonlinear;
+    double impact_threshold = 1e-3;
+    double friction = 0.0;
+    std::string suite_path;
+    std::vector<std::string> metadata_columns;
+    std::vector<SuiteMember> records;
+    IntensityMeasure measure = IntensityMeasure::pga_g;
+    Axis intensity;               ///< levels of `measure`
+    std::vector<double> radii_m;  ///< block sizes R [m], at the block's alpha
+    std::vector<Scenario> scenarios;  ///< anchorages of the configured block, scaled with it
+
+    std::size_t cells_per_scenario() const { return records.size() * radii_m.size() * intensity.points; }
+    std::size_t cell_count() const { return cells_per_scenario() * scenarios.size(); }
+    /// index = ((scenario * n_record + record) * n_radius + radius) * n_level + level.
+    CellModel cell(std::size_t index) const;
+    /// The factor record `r` is multiplied by at intensity level `level` (size-independent:
+    /// alpha is fixed).
+    double scale_factor(std::size_t r, std::size_t level) const;
+    /// The configured block scaled to radius R, same alpha, I0/(mR^2), e and density.
+    Block block_of_radius(double radius_m) const;
+};
+
+/// Reads the suite file and every record in it (each record's own checks apply). `scenarios`
+/// are those of the configured block. Throws InputError naming the option or the suite line.
+SuiteSpec make_suite_spec(const std::string& suite_path, const Block& block, std::vector<Scenario> scenarios,
+                          IntensityMeasure measure, Axis intensity, std::vector<double> radii_m);
+
+/// Computes cells [first, first + count) of `spec` into `out`.
+void compute_suite_cells(const SuiteSpec& spec, const IntegratorSettings& settings, std::size_t first,
+                         std::size_t count, CellResult* out, int lanes = 8);
+
+}  // namespace rocksweep

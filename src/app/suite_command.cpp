@@ -1,0 +1,207 @@
+// `rocksweep suite`: the records of a suite scaled over intensity levels and block sizes, for
+// every scenario; scheduled, checkpointed and resumed like `rocksweep sweep`.
+#include "rocksweep/app/suite_command.hpp"
+
+#include <iomanip>
+#include <optional>
+
+#include "rocksweep/app/memory_budget.hpp"
+#include "rocksweep/app/option_checks.hpp"
+#include "rocksweep/app/run_support.hpp"
+#include "rocksweep/core/errors.hpp"
+#include "rocksweep/io/output_claim.hpp"
+#include "rocksweep/io/suite_file.hpp"
+#include "rocksweep/parallel/progress.hpp"
+#include "rocksweep/parallel/scheduler.hpp"
+
+#ifndef ROCKSWEEP_VERSION
+#define ROCKSWEEP_VERSION "unknown"
+#endif
+
+namespace rocksweep {
+
+CLI::App* add_suite_command(CLI::App& app, SuiteCommand& cmd) {
+    CLI::App* s = app.add_subcommand("suite", "Records of a suite scaled to intensity levels, per block size and scenario: "
+                                              "IDA, overturning spectra, fragility curves");
+    s->fallthrough();
+    add_run_options(*s, cmd.run);
+    s->add_option("--suite", cmd.suite, "Suite of records: CSV with name, file, format, units, ... (docs/records.md)")
+        ->required()->check(existing_file("a record suite (CSV)"));
+    s->add_option("--intensity-measure", cmd.measure,
+                  "What the levels measure: pga (PGA [g]), pgv (PGV [m/s]), pga-ratio (PGA / (g tan alpha)), "
+                  "scale (the factor itself)")
+        ->check(one_of({"pga", "pgv", "pga-ratio", "scale"}))->capture_default_str();
+    s->add_option("--intensity-range", cmd.intensity_range, "Levels from LO to HI, in the measure's unit")
+        ->expected(2)->check(number_in(0, 1e3, "", true))->capture_default_str();
+    s->add_option("--intensity-points", cmd.intensity_points, "Levels, evenly spaced, both ends included")
+        ->check(integer_in(1, 100000))->capture_default_str();
+    s->add_option("--radius-range", cmd.radius_range,
+                  "Block sizes R from LO to HI [m], at the block's alpha and density (default: the block's own R)")
+        ->expected(2)->check(number_in(1e-3, 1e3, "m"));
+    s->add_option("--radius-points", cmd.radius_points, "Block sizes, evenly spaced, both ends included")
+        ->check(integer_in(1, 100000))->capture_default_str();
+    s->add_option("--damage-states", cmd.damage_states,
+                  "Damage states theta_max / alpha >= each value, for the fragility curves (overturning is always one)")
+        ->check(number_in(0, 1e3, "", true))->capture_default_str();
+    return s;
+}
+
+void check_suite_options(const CLI::App& app, const std::vector<std::string>& args, const SuiteCommand& cmd) {
+    refuse_typed(app, args,
+                 {"--omega-ratio-range", "--omega-ratio-points", "--amplitude-ratio-range", "--amplitude-ratio-points", "--phase",
+                  "--vertical-amplitude", "--vertical-phase", "--cycles"},
+                 "an option of sweep; the suite's ground motions are its records");
+    if (cmd.run.refine_stride != 0)
+        throw InputError("refine", std::to_string(cmd.run.refine_stride), "0 for suite (refinement is for spectra maps)");
+    if (cmd.radius_range.empty() && cmd.radius_points != 1)
+        throw InputError("radius-points", std::to_string(cmd.radius_points), "1 without --radius-range (the block's own R)");
+}
+
+namespace {
+
+struct Plan {
+    SuiteSpec spec;
+    std::vector<DamageState> states;
+    IntegratorSettings settings;
+};
+
+Plan make_plan(const Options& opts, const SuiteCommand& cmd) {
+    const SweepSpec base = make_sweep_spec(opts);
+    const Axis levels = make_axis("intensity", cmd.intensity_range, cmd.intensity_points);
+    std::vector<double> radii;
+    if (!cmd.radius_range.empty()) radii = make_axis("radius", cmd.radius_range, cmd.radius_points).values();
+    Plan p{make_suite_spec(cmd.suite, base.block, base.scenarios, parse_intensity_measure("intensity-measure", cmd.measure),
+                           levels, radii),
+           {}, make_settings(opts.numerics)};
+    p.spec.equations = base.equations;
+    p.spec.impact_threshold = base.impact_threshold;
+    p.spec.friction = base.friction;
+    for (double x : cmd.damage_states) p.states.push_back({x, false});
+    p.states.push_back({0.0, true});
+    const double cells = static_cast<double>(p.spec.cell_count());
+    require_memory("intensity-points", std::to_string(cmd.intensity_points), cells * static_cast<double>(SweepResults::bytes_per_cell()),
+                   "the results of " + format_short(cells) + " cells");
+    return p;
+}
+
+/// Rank 0's view of the output before any work.
+struct Start {
+    std::optional<OutputClaim> claim;
+    SweepResults results;
+    std::vector<IndexRange> todo;
+    bool complete = false;  ///< resumed a finished suite: nothing to do
+};
+
+void prepare_output(Start& s, const Plan& plan, const SweepCommand& cmd, std::ostream& log) {
+    if (cmd.resume && cmd.overwrite) throw InputError("resume", "with --overwrite", "one of --resume, --overwrite");
+    s.claim.emplace("output", cmd.output);
+    s.results.resize(plan.spec.cell_count());
+    const bool exists = s.claim->exists();
+    if (exists && cmd.resume) s.results = read_suite_results(cmd.output, plan.spec, plan.settings);
+    else if (exists && !cmd.overwrite)
+        throw InputError("output", cmd.output, "a new file; it exists: pass --resume to continue it or --overwrite to replace it");
+    s.todo = missing_ranges(s.results.done);
+    s.complete = exists && cmd.resume && s.todo.empty();
+    if (exists && cmd.resume && !cmd.quiet)
+        log << cmd.output << (s.complete ? ": suite already complete; nothing to do\n" : ": resuming, ")
+            << (s.complete ? "" : std::to_string(s.results.done_count()) + " of " + std::to_string(s.results.size()) + " cells already done\n");
+}
+
+/// One line per scenario: where the fragility of overturning lies (first block size).
+void summarise(const Plan& plan, const SweepResults& r, std::ostream& log) {
+    const SuiteSpec& spec = plan.spec;
+    const char* units = spec.measure == IntensityMeasure::pga_g ? " g" : spec.measure == IntensityMeasure::pgv_m_s ? " m/s" : "";
+    log << std::setprecision(3) << "overturning fragility against " << intensity_long_name(spec.measure) << " (R = "
+        << spec.radii_m.front() << " m):\n";
+    for (std::size_t s = 0; s < spec.scenarios.size(); ++s) {
+        const FragilityFit fit = suite_fragility(spec, r, s, {plan.states.back()}).fits.front();
+        log << "  " << std::left << std::setw(22) << spec.scenarios[s].name << std::right;
+        if (fit.status == FitStatus::ok)
+            log << "median " << fit.curve.median << units << " (95 % " << fit.median_lo << " to " << fit.median_hi << "), beta "
+                << fit.curve.beta << "\n";
+        else
+            log << to_string(fit.status) << "\n";
+    }
+}
+
+}  // namespace
+
+int run_suite(const Options& opts, const SuiteCommand& cmd, const std::string& config_text, const MpiSession& mpi) {
+    const Plan plan = make_plan(opts, cmd);  // the same on every rank, so is any error
+    const SuiteSpec& spec = plan.spec;
+    IntegratorSettings settings = plan.settings;
+    RootStream log(mpi);
+    const StopSignals signals;
+
+    Start start;
+    const OutputVerdict verdict = agree_on_output(
+        mpi, log, [&] { prepare_output(start, plan, cmd.run, log); return start.complete; }, [&] { start.claim.reset(); });
+    if (verdict == OutputVerdict::nothing_to_do) return 0;
+    if (verdict == OutputVerdict::refused) return 2;
+
+    const Provenance base{ROCKSWEEP_VERSION, config_text, utc_now(), mpi.size(), 0.0};
+    SweepResults& results = start.results;
+    std::size_t done_now = 0;
+    const double t0 = MpiSession::wall_time();
+    double last_save = t0;
+    std::string save_error;  // a failed save stops the run like a signal; reported once at the end
+    auto save = [&] {
+        Provenance prov = base;
+        prov.wall_s = MpiSession::wall_time() - t0;
+        try {
+            write_suite(cmd.run.output, spec, results, plan.states, prov, settings);
+        } catch (const std::exception& e) {
+            if (save_error.empty()) save_error = e.what();
+        }
+        last_save = MpiSession::wall_time();
+    };
+    const auto scheduler = make_mpi_scheduler(mpi.comm());
+    std::size_t todo = 0;
+    for (const IndexRange& r : start.todo) todo += r.count;
+    Progress progress(todo, cmd.run.quiet || !mpi.is_root());
+
+    ScheduleOptions so;
+    so.record_bytes = sizeof(CellResult);
+    // Record cells are long: small chunks keep the ranks evenly busy to the end.
+    so.max_chunk = std::min<std::size_t>(cmd.run.max_chunk, 64);
+    so.min_chunk = 1;
+    so.stop_requested = [&] { return StopSignals::received() != 0 || !save_error.empty(); };
+    so.tick_interval_s = std::min(0.5, cmd.run.checkpoint_s / 2);
+    so.on_tick = [&] {
+        progress.update(done_now);
+        if (MpiSession::wall_time() - last_save >= cmd.run.checkpoint_s) save();
+    };
+    settings.stop_requested = [&] { return StopSignals::received() != 0 || scheduler->stop_pending(); };
+    const int lanes = opts.numerics.lanes;
+    const ComputeFn compute = cell_results_compute([&](std::size_t first, std::size_t count, CellResult* out) {
+        compute_suite_cells(spec, settings, first, count, out, lanes);
+    });
+    const SinkFn sink = cell_results_sink(results, done_now);
+
+    if (mpi.is_root() && !cmd.run.quiet)
+        log << "suite: " << spec.scenarios.size() << " scenarios x " << spec.records.size() << " records x " << spec.radii_m.size()
+            << " block sizes x " << spec.intensity.points << " levels = " << spec.cell_count() << " cells on " << mpi.size()
+            << " rank(s) -> " << cmd.run.output << "\n";
+    scheduler->run(start.todo, so, compute, sink);
+    progress.update(done_now);
+    progress.finish();
+    if (!mpi.is_root()) return 0;  // rank 0 alone decides the job's status
+    if (save_error.empty()) save();
+    if (!save_error.empty()) {
+        log << "rocksweep: error: " << save_error << "\n";
+        return 1;
+    }
+    const std::size_t done = results.done_count();
+    if (done < results.size()) {
+        log << "stopped by signal " << StopSignals::stopping_signal() << ": " << done << " of " << results.size()
+            << " cells saved in " << cmd.run.output << "; rerun with --resume to continue\n";
+        return StopSignals::exit_status();
+    }
+    if (!cmd.run.quiet) {
+        summarise(plan, results, log);
+        log << "wrote " << cmd.run.output << "\n";
+    }
+    return 0;
+}
+
+}  // namespace rocksweep

@@ -1,0 +1,70 @@
+#pragma once
+/// What every file of sweep results shares (spectra, suite): the result columns of a group of
+/// cells with their units and meanings, the block's and a scenario's attributes, and the
+/// numerical settings that shape results, each written and compared from one list so that a
+/// writer and its resume reader can never disagree. Private to rocksweep_io.
+#include <functional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "rocksweep/grid/sweep.hpp"
+#include "rocksweep/io/grid_layout.hpp"
+#include "rocksweep/io/hdf5.hpp"
+#include "rocksweep/io/spectra_file.hpp"
+#include "rocksweep/physics/integrator.hpp"
+
+namespace rocksweep::io {
+
+struct NamedNumber {
+    const char* name;
+    double value;
+};
+struct NamedText {
+    const char* name;
+    std::string value;
+};
+
+/// The block as root attributes: sizes, alpha, p, e, I0/(mR^2), m, g.
+std::vector<NamedNumber> block_numbers(const Block& b);
+std::vector<NamedNumber> scenario_numbers(const Scenario& s);
+std::vector<NamedText> scenario_texts(const Scenario& s);
+
+/// A setting that shapes results without defining the cells: a resume must use the same one,
+/// and an error names the option that differs.
+struct Setting {
+    const char* attribute;
+    const char* option;   ///< as the user writes it, without "--"
+    std::string text;     ///< what the user gave, for messages and string attributes
+    double number = 0.0;  ///< for numeric attributes
+    bool is_text = false;
+};
+/// The integrator's: method, its step setting, max-steps, energy stop, impact threshold, equations.
+std::vector<Setting> numerics_settings(const IntegratorSettings& s, double impact_threshold, Equations equations);
+
+void write_numbers(const h5::Object& obj, std::span<const NamedNumber> numbers);
+void write_settings(const h5::Object& obj, std::span<const Setting> settings);
+
+/// Called with what differs, in words; must throw.
+using Mismatch = std::function<void(const std::string&)>;
+void compare_numbers(const h5::Object& obj, std::span<const NamedNumber> numbers, const Mismatch& mismatch);
+void compare_texts(const h5::Object& obj, std::span<const NamedText> texts, const Mismatch& mismatch);
+/// Throws InputError naming the option whose value differs from the file's `path`.
+void compare_settings(const std::string& path, const h5::Object& obj, std::span<const Setting> settings);
+
+/// A scenario's group: its index, anchorage texts and numbers.
+void write_scenario_attributes(const h5::Group& g, std::size_t index, const Scenario& s);
+
+/// Writes cells [first, first + grid.cell_count()) of every result column as one dataset each.
+void write_result_columns(const GridGroup& grid, const SweepResults& r, std::size_t first);
+/// Reads them back into cells [first, ...) of `r`; a dataset of another shape is a mismatch.
+void read_result_columns(const h5::Group& g, std::span<const GridAxis> axes, SweepResults& r, std::size_t first,
+                         const Mismatch& mismatch);
+
+/// /provenance: what produced the file (everything there may differ between two runs).
+void write_provenance(const h5::File& f, const Provenance& prov, const IntegratorSettings& settings);
+
+/// Root attributes n_cells, n_done, complete.
+void write_progress(const h5::Object& obj, const SweepResults& r);
+
+}  // namespace rocksweep::io

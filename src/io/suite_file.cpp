@@ -1,0 +1,282 @@
+#include "rocksweep/io/suite_file.hpp"
+
+#include <algorithm>
+#include <optional>
+#include <set>
+
+#include "result_columns.hpp"
+#include "rocksweep/core/errors.hpp"
+#include "rocksweep/io/grid_layout.hpp"
+#include "rocksweep/io/hdf5.hpp"
+
+namespace rocksweep {
+
+namespace {
+
+constexpr std::int64_t format_version = 1;
+constexpr const char* kind = "suite";
+
+GridAxis record_axis(const SuiteSpec& spec) {
+    std::vector<double> index(spec.records.size());
+    for (std::size_t i = 0; i < index.size(); ++i) index[i] = static_cast<double>(i);
+    return {"record", "1", "record (names: flag_meanings of /records/record)", index};
+}
+GridAxis radius_axis(const SuiteSpec& spec) {
+    return {"radius_m", "m", "block size R (corner to centre of mass), same alpha", spec.radii_m};
+}
+GridAxis intensity_axis(const SuiteSpec& spec) {
+    return {"intensity", intensity_units(spec.measure), intensity_long_name(spec.measure), spec.intensity.values()};
+}
+
+std::string record_names(const SuiteSpec& spec) {
+    std::string names;
+    for (const SuiteMember& m : spec.records) names += (names.empty() ? "" : " ") + m.entry.name;
+    return names;
+}
+
+/// What defines the cells beyond the block and the numerics: compared on resume.
+std::vector<io::NamedText> root_texts(const SuiteSpec& spec) {
+    return {{"intensity_measure", to_string(spec.measure)}, {"records", record_names(spec)}};
+}
+
+/// Datasets of /records: a record of one of these names would collide with them.
+std::set<std::string> records_datasets() {
+    std::set<std::string> names{"record", "intensity", "scale_factor", "pga_scaled_g"};
+    for (const IntensityField& f : intensity_fields) names.insert(f.name);
+    return names;
+}
+
+void write_records(const h5::File& f, const SuiteSpec& spec) {
+    const h5::Group g = f.create_group("records");
+    const GridAxis axes[] = {record_axis(spec), intensity_axis(spec)};
+    const GridGroup grid(g, axes);
+    const h5::Dataset record = g.open_dataset("record");
+    h5::write_attribute(record, "flag_values", std::span<const double>(axes[0].values));
+    h5::write_attribute(record, "flag_meanings", record_names(spec));
+    const std::size_t n = spec.records.size(), levels = spec.intensity.points;
+    for (const IntensityField& field : intensity_fields) {
+        std::vector<double> v;
+        for (const SuiteMember& m : spec.records) v.push_back(m.measures.*field.value);
+        const h5::Dataset ds = grid.write_on<double>(field.name, v, {"record"});
+        h5::write_attribute(ds, "units", field.units);
+        h5::write_attribute(ds, "long_name", field.long_name);
+    }
+    std::vector<double> scale(n * levels), pga(n * levels);
+    for (std::size_t r = 0; r < n; ++r)
+        for (std::size_t l = 0; l < levels; ++l) {
+            scale[r * levels + l] = spec.scale_factor(r, l);
+            pga[r * levels + l] = scale[r * levels + l] * spec.records[r].measures.pga_g;
+        }
+    h5::write_attribute(grid.write<double>("scale_factor", scale), "long_name", "factor each record is multiplied by at each level");
+    const h5::Dataset ds = grid.write<double>("pga_scaled_g", pga);
+    h5::write_attribute(ds, "units", "1");
+    h5::write_attribute(ds, "long_name", "peak ground acceleration of the scaled record / standard gravity");
+    for (const SuiteMember& m : spec.records) {
+        const h5::Group rg = g.create_group(m.entry.name);
+        h5::write_attribute(rg, "file", m.record.path);
+        h5::write_attribute(rg, "format", to_string(m.record.format));
+        h5::write_attribute(rg, "units", m.record.units);
+        h5::write_attribute(rg, "dt_s", m.record.dt_s);
+        h5::write_attribute(rg, "column", m.record.column);
+        h5::write_attribute(rg, "scale", m.record.scale);
+        h5::write_attribute(rg, "suite_line", m.entry.line);
+        for (std::size_t c = 0; c < spec.metadata_columns.size(); ++c)
+            h5::write_attribute(rg, spec.metadata_columns[c], m.entry.metadata.at(c));
+    }
+}
+
+void write_measure_on(const GridGroup& grid, const char* name, const std::vector<double>& v,
+                      std::initializer_list<std::string_view> axes, const char* units, const char* long_name) {
+    const h5::Dataset ds = grid.write_on<double>(name, v, axes);
+    h5::write_attribute(ds, "units", units);
+    h5::write_attribute(ds, "long_name", long_name);
+}
+
+void write_overturning(const h5::Group& scenario, const SuiteSpec& spec, const OverturningSpectrum& o) {
+    const h5::Group g = scenario.create_group("overturning");
+    const GridAxis axes[] = {record_axis(spec), radius_axis(spec)};
+    const GridGroup grid(g, axes);
+    const char* units = intensity_units(spec.measure);
+    write_measure_on(grid, "first_intensity", o.first_intensity, {"record", "radius_m"}, units,
+                     "lowest intensity level that overturns the block (NaN: none does)");
+    write_measure_on(grid, "first_pga_g", o.first_pga_g, {"record", "radius_m"}, "1",
+                     "PGA / standard gravity of the record at that level");
+    write_measure_on(grid, "below_intensity", o.below_intensity, {"record", "radius_m"}, units,
+                     "the level before it, which does not overturn the block (NaN: none)");
+    const h5::Dataset ds = grid.write<std::uint8_t>("safe_above", o.safe_above);
+    const std::uint8_t flags[] = {0, 1};
+    h5::write_attribute(ds, "long_name", "a level above the first overturning one leaves the block standing");
+    h5::write_attribute(ds, "flag_values", std::span<const std::uint8_t>(flags));
+    h5::write_attribute(ds, "flag_meanings", "overturns_at_every_higher_level stands_at_some_higher_level");
+}
+
+void write_fragility(const h5::Group& scenario, const SuiteSpec& spec, const SuiteFragility& fr) {
+    const h5::Group g = scenario.create_group("fragility");
+    std::vector<double> index, ratios;
+    std::string meanings;
+    for (std::size_t d = 0; d < fr.states.size(); ++d) {
+        index.push_back(static_cast<double>(d));
+        ratios.push_back(fr.states[d].overturning ? NAN : fr.states[d].rotation_ratio);
+        meanings += (meanings.empty() ? "" : " ") + fr.states[d].name();
+    }
+    const GridAxis axes[] = {{"damage_state", "1", "damage state (names: its flag_meanings)", index}, radius_axis(spec),
+                             intensity_axis(spec)};
+    const GridGroup grid(g, axes);
+    const h5::Dataset state = g.open_dataset("damage_state");
+    h5::write_attribute(state, "flag_values", std::span<const double>(index));
+    h5::write_attribute(state, "flag_meanings", meanings);
+    h5::write_attribute(state, "rotation_ratios", std::span<const double>(ratios));
+
+    std::vector<double> fraction(fr.exceed.size()), lo(fr.exceed.size()), hi(fr.exceed.size());
+    for (std::size_t k = 0; k < fr.exceed.size(); ++k) {
+        if (fr.total[k] == 0) {
+            fraction[k] = lo[k] = hi[k] = NAN;
+            continue;
+        }
+        const Stripe s{1.0, fr.exceed[k], fr.total[k]};
+        fraction[k] = s.fraction();
+        wilson_interval(s, lo[k], hi[k]);
+    }
+    const h5::Dataset f = grid.write<double>("fraction", fraction);
+    h5::write_attribute(f, "units", "1");
+    h5::write_attribute(f, "long_name", "fraction of the records that reach the damage state (empirical)");
+    h5::write_attribute(grid.write<double>("fraction_lo", lo), "long_name", "Wilson 95 % interval of fraction: low end");
+    h5::write_attribute(grid.write<double>("fraction_hi", hi), "long_name", "Wilson 95 % interval of fraction: high end");
+    h5::write_attribute(grid.write<std::int32_t>("exceed", fr.exceed), "long_name", "records that reach the damage state");
+    h5::write_attribute(grid.write<std::int32_t>("total", fr.total), "long_name", "records whose run converged");
+
+    struct FitColumn {
+        const char* name;
+        double (*get)(const FragilityFit&);
+        const char* units;
+        const char* long_name;
+    };
+    const char* units = intensity_units(spec.measure);
+    const FitColumn columns[] = {
+        {"median", [](const FragilityFit& x) { return x.curve.median; }, units, "lognormal fit: median intensity"},
+        {"beta", [](const FragilityFit& x) { return x.curve.beta; }, "1", "lognormal fit: dispersion (log standard deviation)"},
+        {"median_lo", [](const FragilityFit& x) { return x.median_lo; }, units, "95 % interval of the median: low end"},
+        {"median_hi", [](const FragilityFit& x) { return x.median_hi; }, units, "95 % interval of the median: high end"},
+        {"beta_lo", [](const FragilityFit& x) { return x.beta_lo; }, "1", "95 % interval of beta: low end"},
+        {"beta_hi", [](const FragilityFit& x) { return x.beta_hi; }, "1", "95 % interval of beta: high end"},
+        {"se_ln_median", [](const FragilityFit& x) { return x.se_ln_median; }, "1", "standard error of ln(median)"},
+        {"se_beta", [](const FragilityFit& x) { return x.se_beta; }, "1", "standard error of beta"},
+    };
+    for (const FitColumn& c : columns) {
+        std::vector<double> v;
+        for (const FragilityFit& fit : fr.fits) v.push_back(c.get(fit));
+        write_measure_on(grid, c.name, v, {"damage_state", "radius_m"}, c.units, c.long_name);
+    }
+    std::vector<std::uint8_t> status;
+    for (const FragilityFit& fit : fr.fits) status.push_back(static_cast<std::uint8_t>(fit.status));
+    const h5::Dataset ds = grid.write_on<std::uint8_t>("fit_status", status, {"damage_state", "radius_m"});
+    const std::uint8_t flags[] = {0, 1, 2, 3, 4, 5};
+    h5::write_attribute(ds, "long_name", "how the lognormal fit ended (docs/fragility.md)");
+    h5::write_attribute(ds, "flag_values", std::span<const std::uint8_t>(flags));
+    h5::write_attribute(ds, "flag_meanings", "ok none_reached all_reached zero_dispersion not_identifiable decreasing");
+}
+
+void write_contents(const h5::File& f, const SuiteSpec& spec, const SweepResults& r, const std::vector<DamageState>& states,
+                    const Provenance& prov, const IntegratorSettings& settings) {
+    h5::write_attribute(f, "title", "rocksweep record-suite sweep");
+    h5::write_attribute(f, "format_version", format_version);
+    h5::write_attribute(f, "kind", kind);
+    io::write_numbers(f, io::block_numbers(spec.block));
+    io::write_settings(f, io::numerics_settings(settings, spec.impact_threshold, spec.equations));
+    for (const io::NamedText& t : root_texts(spec)) h5::write_attribute(f, t.name, t.value);
+    h5::write_attribute(f, "intensity_units", intensity_units(spec.measure));
+    h5::write_attribute(f, "intensity_long_name", intensity_long_name(spec.measure));
+    h5::write_attribute(f, "suite_file", spec.suite_path);
+    h5::write_attribute(f, "rocksweep_version", prov.version);
+    io::write_progress(f, r);
+    write_records(f, spec);
+
+    const bool complete = r.done_count() == r.size();
+    const GridAxis axes[] = {record_axis(spec), radius_axis(spec), intensity_axis(spec)};
+    const h5::Group suite = f.create_group("suite");
+    for (std::size_t s = 0; s < spec.scenarios.size(); ++s) {
+        const h5::Group g = suite.create_group(spec.scenarios[s].name);
+        io::write_scenario_attributes(g, s, spec.scenarios[s]);
+        const GridGroup grid(g, axes);
+        io::write_result_columns(grid, r, s * spec.cells_per_scenario());
+        if (!complete) continue;
+        write_overturning(g, spec, overturning_spectrum(spec, r, s));
+        write_fragility(g, spec, suite_fragility(spec, r, s, states));
+    }
+    io::write_provenance(f, prov, settings);
+}
+
+SweepResults read_contents(const std::string& path, const h5::File& f, const SuiteSpec& spec,
+                           const IntegratorSettings& settings) {
+    const io::Mismatch mismatch = [&](const std::string& what) {
+        throw InputError("suite file", path, "a file written for the same suite sweep (" + what + ")");
+    };
+    io::compare_numbers(f, io::block_numbers(spec.block), mismatch);
+    io::compare_settings(path, f, io::numerics_settings(settings, spec.impact_threshold, spec.equations));
+    io::compare_texts(f, root_texts(spec), mismatch);
+    const h5::Group records = f.open_group("records");
+    const GridAxis record_axes[] = {record_axis(spec), intensity_axis(spec)};
+    if (const std::string diff = axes_difference(records, record_axes); !diff.empty()) mismatch("/records: " + diff);
+    // A record file edited since the run would give other results under the same name.
+    const std::vector<double> pga = h5::read_1d<double>(records, "pga_g");
+    for (std::size_t i = 0; i < spec.records.size(); ++i)
+        if (pga.at(i) != spec.records[i].measures.pga_g)
+            mismatch("record " + spec.records[i].entry.name + " has PGA " + format_number(pga[i]) + " g in the file, " +
+                     format_number(spec.records[i].measures.pga_g) + " g now: its file changed");
+
+    const h5::Group suite = f.open_group("suite");
+    std::vector<std::string> expected;
+    for (const Scenario& s : spec.scenarios) expected.push_back(s.name);
+    std::sort(expected.begin(), expected.end());
+    if (suite.children() != expected) mismatch("its scenarios differ from the config's");
+    const GridAxis axes[] = {record_axis(spec), radius_axis(spec), intensity_axis(spec)};
+    SweepResults r;
+    r.resize(spec.cell_count());
+    for (std::size_t s = 0; s < spec.scenarios.size(); ++s) {
+        const h5::Group g = suite.open_group(spec.scenarios[s].name);
+        io::compare_texts(g, io::scenario_texts(spec.scenarios[s]), mismatch);
+        io::compare_numbers(g, io::scenario_numbers(spec.scenarios[s]), mismatch);
+        if (const std::string diff = axes_difference(g, axes); !diff.empty()) mismatch(g.name() + ": " + diff);
+        io::read_result_columns(g, axes, r, s * spec.cells_per_scenario(), mismatch);
+    }
+    return r;
+}
+
+}  // namespace
+
+void write_suite(const std::string& path, const SuiteSpec& spec, const SweepResults& r,
+                 const std::vector<DamageState>& states, const Provenance& prov, const IntegratorSettings& settings) {
+    if (r.size() != spec.cell_count())
+        throw std::invalid_argument("write_suite: " + std::to_string(r.size()) + " results for " +
+                                    std::to_string(spec.cell_count()) + " cells");
+    const std::set<std::string> taken = records_datasets();
+    for (const SuiteMember& m : spec.records)
+        if (taken.count(m.entry.name))
+            throw InputError("suite", spec.suite_path + " line " + std::to_string(m.entry.line),
+                             "record names other than the datasets of /records (" + m.entry.name + ")");
+    h5::publish_h5_atomically(path, [&](const h5::File& f) { write_contents(f, spec, r, states, prov, settings); });
+}
+
+SweepResults read_suite_results(const std::string& path, const SuiteSpec& spec, const IntegratorSettings& settings) {
+    auto not_suite = [&](const std::string& what) {
+        return InputError("output", path, "a rocksweep suite file to resume; it is " + what);
+    };
+    std::optional<h5::File> opened;
+    try {
+        opened.emplace(h5::File::open_read_only(path));
+    } catch (const Hdf5Error&) {
+        throw not_suite("not an HDF5 file");
+    }
+    const h5::File& f = *opened;
+    if (!f.has_attribute("kind") || h5::read_string_attribute(f, "kind") != kind || !f.exists("suite"))
+        throw not_suite("an HDF5 file that rocksweep suite did not write");
+    if (const std::int64_t v = h5::read_int64_attribute(f, "format_version"); v != format_version)
+        throw not_suite("of format version " + std::to_string(v) + ", which this rocksweep does not continue");
+    try {
+        return read_contents(path, f, spec, settings);
+    } catch (const Hdf5Error& e) {
+        throw InputError("suite file", path, std::string("a rocksweep suite file (") + e.what() + ")");
+    }
+}
+
+}  // namespace rocksweep

@@ -1,0 +1,124 @@
+#include "rocksweep/records/suite_sweep.hpp"
+
+#include <cmath>
+#include <utility>
+
+#include "rocksweep/core/errors.hpp"
+#include "rocksweep/physics/integrator.hpp"
+
+namespace rocksweep {
+
+namespace {
+
+struct MeasureInfo {
+    IntensityMeasure measure;
+    const char* word;   // as the option takes it
+    const char* name;   // dataset and attribute name
+    const char* units;  // CF units
+    const char* long_name;
+};
+
+constexpr MeasureInfo measures[] = {
+    {IntensityMeasure::pga_g, "pga", "pga_g", "1", "target peak ground acceleration / standard gravity"},
+    {IntensityMeasure::pgv_m_s, "pgv", "pgv_m_s", "m/s", "target peak ground velocity"},
+    {IntensityMeasure::pga_ratio, "pga-ratio", "pga_ratio", "1", "target PGA / (g tan alpha)"},
+    {IntensityMeasure::scale, "scale", "scale", "1", "scale factor applied to every record"},
+};
+
+const MeasureInfo& info(IntensityMeasure m) {
+    for (const MeasureInfo& i : measures)
+        if (i.measure == m) return i;
+    return measures[0];  // not reached: every measure has its row
+}
+
+/// The scenario's anchorage for the block scaled to `b`: the same ratios (F_u / (m g),
+/// theta_f / alpha, K_min / K_max), so K follows the block's size.
+Anchorage scaled_anchorage(const Scenario& s, const Block& configured, const Block& b) {
+    const Anchorage& a = s.anchorage;
+    if (a.kind == AnchorageKind::free) return free_anchorage();
+    const double strength = a.strength_n / (configured.mass_kg * configured.gravity) * b.mass_kg * b.gravity;
+    const double theta_f = s.theta_f_ratio * b.alpha_rad;
+    if (a.kind == AnchorageKind::constant) return constant_anchorage(b, strength, theta_f);
+    return adaptive_anchorage(b, strength, theta_f, s.kmin_ratio, a.break_rule, a.law);
+}
+
+}  // namespace
+
+IntensityMeasure parse_intensity_measure(const std::string& field, const std::string& text) {
+    for (const MeasureInfo& i : measures)
+        if (text == i.word) return i.measure;
+    throw InputError(field, text, "one of pga, pgv, pga-ratio, scale");
+}
+
+std::string to_string(IntensityMeasure m) { return info(m).name; }
+const char* intensity_units(IntensityMeasure m) { return info(m).units; }
+const char* intensity_long_name(IntensityMeasure m) { return info(m).long_name; }
+
+Block SuiteSpec::block_of_radius(double radius_m) const {
+    if (radius_m == block.radius_m) return block;
+    const double f = radius_m / block.radius_m;
+    return equivalent_block(radius_m, block.alpha_rad, block.inertia_ratio, block.mass_kg * f * f * f, block.gravity, block.e);
+}
+
+double SuiteSpec::scale_factor(std::size_t r, std::size_t level) const {
+    const double x = intensity.at(level);
+    const IntensityMeasures& im = records.at(r).measures;
+    switch (measure) {
+        case IntensityMeasure::pga_g: return x / im.pga_g;
+        case IntensityMeasure::pgv_m_s: return x / im.pgv_m_s;
+        case IntensityMeasure::pga_ratio: return x / pga_over_g_tan_alpha(im.pga_g, block.alpha_rad, block.gravity);
+        case IntensityMeasure::scale: return x;
+    }
+    return x;
+}
+
+CellModel SuiteSpec::cell(std::size_t index) const {
+    const std::size_t per = cells_per_scenario();
+    const Scenario& sc = scenarios.at(index / per);
+    const std::size_t in = index % per, levels = intensity.points;
+    const std::size_t level = in % levels, radius = (in / levels) % radii_m.size(), r = in / (levels * radii_m.size());
+    const Block b = block_of_radius(radii_m[radius]);
+    Pulse pulse = to_pulse(records[r].record, b.gravity);
+    const double f = scale_factor(r, level);
+    std::vector<double> scaled(*pulse.record);
+    for (double& a : scaled) a *= f;
+    pulse.record = std::make_shared<const std::vector<double>>(std::move(scaled));
+    return make_cell_model(b, scaled_anchorage(sc, block, b), pulse, equations, impact_threshold);
+}
+
+SuiteSpec make_suite_spec(const std::string& suite_path, const Block& block, std::vector<Scenario> scenarios,
+                          IntensityMeasure measure, Axis intensity, std::vector<double> radii_m) {
+    SuiteSpec spec;
+    spec.block = block;
+    spec.suite_path = suite_path;
+    const RecordSuite suite = read_record_suite(suite_path);
+    spec.metadata_columns = suite.metadata_columns;
+    for (const SuiteRecord& entry : suite.records) {
+        SuiteMember m{entry, read_record(entry.source), {}};
+        m.measures = intensity_measures(m.record);
+        // A level is reached by dividing by the record's own measure: a record without one
+        // (all zeros) cannot be scaled to any level.
+        const double own = measure == IntensityMeasure::pgv_m_s ? m.measures.pgv_m_s : m.measures.pga_g;
+        if (measure != IntensityMeasure::scale && !(own > 0.0))
+            throw InputError("suite", suite_path + " line " + std::to_string(entry.line),
+                             "records with a non-zero " + std::string(info(measure).name) + " to scale to a level (" +
+                                 entry.name + " has none)");
+        spec.records.push_back(std::move(m));
+    }
+    if (spec.records.empty()) throw InputError("suite", suite_path, "a suite with at least one record");
+    spec.measure = measure;
+    spec.intensity = intensity;
+    if (radii_m.empty()) radii_m.push_back(block.radius_m);
+    spec.radii_m = std::move(radii_m);
+    spec.scenarios = std::move(scenarios);
+    return spec;
+}
+
+void compute_suite_cells(const SuiteSpec& spec, const IntegratorSettings& settings, std::size_t first,
+                         std::size_t count, CellResult* out, int lanes) {
+    std::vector<CellModel> cells(count);
+    for (std::size_t i = 0; i < count; ++i) cells[i] = spec.cell(first + i);
+    integrate_cells(cells, std::span<CellResult>(out, count), settings, lanes);
+}
+
+}  // namespace rocksweep

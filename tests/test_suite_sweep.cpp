@@ -1,0 +1,162 @@
+// A sweep over a record suite (suite_sweep.hpp) and what is read off it (suite_products.hpp):
+// each record reaches its level exactly, each block size keeps alpha and density, each
+// anchorage keeps its ratios, and the overturning spectrum and the fragility stripes count
+// what the outcomes say.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "rocksweep/core/errors.hpp"
+#include "rocksweep/physics/integrator.hpp"
+#include "rocksweep/records/suite_products.hpp"
+#include "rocksweep/records/suite_sweep.hpp"
+
+using namespace rocksweep;
+
+namespace {
+
+const Block kBlock = rectangular_block(0.30, 1.36, 3361.0);  // S. Matteo
+
+std::vector<Scenario> scenarios() {
+    const double fu = 0.4 * kBlock.mass_kg * kBlock.gravity;
+    return {{"free", free_anchorage(), 0.0, 1.0},
+            {"constant_tf1", constant_anchorage(kBlock, fu, kBlock.alpha_rad), 1.0, 1.0},
+            {"adaptive_rho0.1", adaptive_anchorage(kBlock, fu, kBlock.alpha_rad, 0.1), 1.0, 0.1}};
+}
+
+SuiteSpec shipped(IntensityMeasure m, std::vector<double> radii = {}) {
+    return make_suite_spec(ROCKSWEEP_CONFIGS_DIR "/records_suite.csv", kBlock, scenarios(), m, Axis{0.1, 0.9, 5},
+                           std::move(radii));
+}
+
+double peak(const std::vector<double>& v) {
+    double m = 0.0;
+    for (double x : v) m = std::max(m, std::abs(x));
+    return m;
+}
+
+/// A suite of `n` one-sample-pair records of PGA 0.5 g, for products on made-up outcomes.
+SuiteSpec synthetic(std::size_t n, std::size_t levels) {
+    SuiteSpec s;
+    s.block = kBlock;
+    s.scenarios = {scenarios().front()};
+    s.intensity = Axis{0.1, 0.1 * static_cast<double>(levels), levels};
+    s.radii_m = {kBlock.radius_m};
+    for (std::size_t i = 0; i < n; ++i) {
+        SuiteMember m;
+        m.record.dt_s = 0.01;
+        m.record.ax_g = {0.0, 0.5, 0.0};
+        m.measures.pga_g = 0.5;
+        s.records.push_back(m);
+    }
+    return s;
+}
+
+}  // namespace
+
+TEST(SuiteSweep, EveryRecordIsScaledToTheLevelOfEachMeasure) {
+    for (const IntensityMeasure m : {IntensityMeasure::pga_g, IntensityMeasure::pgv_m_s, IntensityMeasure::pga_ratio}) {
+        const SuiteSpec spec = shipped(m);
+        ASSERT_EQ(spec.records.size(), 12u);
+        for (std::size_t r = 0; r < spec.records.size(); ++r)
+            for (std::size_t l = 0; l < spec.intensity.points; ++l) {
+                const IntensityMeasures& im = spec.records[r].measures;
+                const double f = spec.scale_factor(r, l);
+                const double reached = m == IntensityMeasure::pga_g     ? f * im.pga_g
+                                       : m == IntensityMeasure::pgv_m_s ? f * im.pgv_m_s
+                                                                        : pga_over_g_tan_alpha(f * im.pga_g, kBlock.alpha_rad, kBlock.gravity);
+                EXPECT_NEAR(reached, spec.intensity.at(l), 1e-14 * spec.intensity.at(l)) << to_string(m) << " record " << r;
+            }
+    }
+    const SuiteSpec scale = shipped(IntensityMeasure::scale);
+    EXPECT_EQ(scale.scale_factor(3, 2), scale.intensity.at(2));
+}
+
+TEST(SuiteSweep, ACellCarriesItsRecordScaledAtItsLevelOnItsBlock) {
+    const SuiteSpec spec = shipped(IntensityMeasure::pga_g, {0.5, 1.0, 2.0});
+    ASSERT_EQ(spec.cell_count(), 3u * 12u * 3u * 5u);
+    // scenario 1, record 4, radius 2, level 3: ((1 * 12 + 4) * 3 + 2) * 5 + 3
+    const CellModel c = spec.cell(((1 * 12 + 4) * 3 + 2) * 5 + 3);
+    const Block b = spec.block_of_radius(2.0);
+    EXPECT_DOUBLE_EQ(c.p(), b.p());
+    EXPECT_DOUBLE_EQ(c.alpha, kBlock.alpha_rad);
+    ASSERT_EQ(c.pulse.kind, PulseKind::record);
+    // The ground in units of the block's g has the level's PGA in standard g.
+    EXPECT_NEAR(peak(*c.pulse.record) * kBlock.gravity / standard_gravity, spec.intensity.at(3), 1e-12);
+    EXPECT_EQ(c.anchorage, AnchorageKind::constant);
+    // Same theta_f / alpha and F_u / (m g) on the larger block: the force reaches F_u at theta_f.
+    EXPECT_DOUBLE_EQ(c.break_max, kBlock.alpha_rad);
+    EXPECT_NEAR(c.force_max * std::tan(c.break_max / 2), 1.0, 1e-12);
+}
+
+TEST(SuiteSweep, ABlockSizeKeepsAlphaAndDensity) {
+    const SuiteSpec spec = shipped(IntensityMeasure::pga_g);
+    const Block b = spec.block_of_radius(2.0 * kBlock.radius_m);
+    EXPECT_DOUBLE_EQ(b.alpha_rad, kBlock.alpha_rad);
+    EXPECT_NEAR(b.mass_kg, 8.0 * kBlock.mass_kg, 1e-9 * kBlock.mass_kg);
+    EXPECT_NEAR(b.p(), kBlock.p() / std::sqrt(2.0), 1e-12);
+    EXPECT_EQ(b.e, kBlock.e);
+    // The configured size is the configured block, bit for bit.
+    const Block same = spec.block_of_radius(kBlock.radius_m);
+    EXPECT_EQ(same.mass_kg, kBlock.mass_kg);
+    EXPECT_EQ(same.p(), kBlock.p());
+}
+
+TEST(SuiteSweep, ARecordThatCannotBeScaledIsRefused) {
+    const std::string dir = ::testing::TempDir();
+    {
+        std::FILE* f = std::fopen((dir + "zero.dat").c_str(), "w");
+        std::fputs("0 0\n0.01 0\n0.02 0\n", f);
+        std::fclose(f);
+        f = std::fopen((dir + "zero.csv").c_str(), "w");
+        std::fputs("name,file,format,units\nquiet,zero.dat,time_accel,g\n", f);
+        std::fclose(f);
+    }
+    try {
+        make_suite_spec(dir + "zero.csv", kBlock, scenarios(), IntensityMeasure::pga_g, Axis{0.1, 0.2, 2}, {});
+        FAIL() << "accepted a record with no PGA";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("quiet has none"), std::string::npos) << e.what();
+    }
+}
+
+TEST(SuiteProducts, FirstOverturningLevelAndSafeLevelsAboveIt) {
+    const SuiteSpec spec = synthetic(3, 5);
+    SweepResults r;
+    r.resize(spec.cell_count());
+    const std::uint8_t outcomes[3][5] = {{0, 0, 1, 0, 1},    // overturns at 0.3, stands at 0.4
+                                         {0, 0, 0, 2, 1},    // from 0.4 on
+                                         {0, 0, 0, 0, 0}};   // never
+    for (std::size_t rec = 0; rec < 3; ++rec)
+        for (std::size_t l = 0; l < 5; ++l) r.store(rec * 5 + l, CellResult{0.1, NAN, NAN, 0, 0, 0, 0, Outcome{outcomes[rec][l]}});
+    const OverturningSpectrum o = overturning_spectrum(spec, r, 0);
+    EXPECT_DOUBLE_EQ(o.first_intensity[0], spec.intensity.at(2));
+    EXPECT_DOUBLE_EQ(o.below_intensity[0], spec.intensity.at(1));
+    EXPECT_EQ(o.safe_above[0], 1);
+    EXPECT_DOUBLE_EQ(o.first_pga_g[0], spec.intensity.at(2));  // PGA is the measure
+    EXPECT_DOUBLE_EQ(o.first_intensity[1], spec.intensity.at(3));
+    EXPECT_EQ(o.safe_above[1], 0);
+    EXPECT_TRUE(std::isnan(o.first_intensity[2]));
+    EXPECT_TRUE(std::isnan(o.first_pga_g[2]));
+}
+
+TEST(SuiteProducts, FragilityStripesCountTheRecordsAndLeaveOutUnconvergedRuns) {
+    const SuiteSpec spec = synthetic(4, 3);
+    SweepResults r;
+    r.resize(spec.cell_count());
+    // max rotation / alpha per record and level; 9: overturned; -1: not converged.
+    const double rot[4][3] = {{0.05, 0.2, 9}, {0.2, 0.6, 9}, {0.01, 0.02, 0.4}, {0.05, -1, 9}};
+    for (std::size_t rec = 0; rec < 4; ++rec)
+        for (std::size_t l = 0; l < 3; ++l) {
+            const double x = rot[rec][l];
+            const Outcome o = x == 9 ? Outcome::overturned_impact : x < 0 ? Outcome::not_converged : Outcome::safe;
+            r.store(rec * 3 + l, CellResult{x == 9 ? M_PI / 2 / kBlock.alpha_rad : x, NAN, NAN, 0, 0, 0, 0, o});
+        }
+    const SuiteFragility f = suite_fragility(spec, r, 0, {{0.1, false}, {0.0, true}});
+    const std::vector<std::int32_t> exceed{1, 2, 4, 0, 0, 3}, total{4, 3, 4, 4, 3, 4};
+    EXPECT_EQ(f.exceed, exceed);
+    EXPECT_EQ(f.total, total);
+    ASSERT_EQ(f.fits.size(), 2u);
+    // Overturning: none, none, 3 of 4 at the top level: the median lies above the second level.
+    EXPECT_GT(f.fits[1].curve.median, spec.intensity.at(1));
+}
