@@ -46,6 +46,11 @@ def record_style(i):
     return rsplot.run_colour(i), LINESTYLES[(i // len(rsplot.RUN_COLOURS)) % len(LINESTYLES)]
 
 
+def scenario_colour(S, name):
+    """A scenario's colour, by its place in the file: the same whatever --scenario picks."""
+    return rsplot.run_colour(int(S["scenarios"][name]["attrs"].get("index", 0)))
+
+
 def intensity_label(S):
     """The intensity axis in words with its unit."""
     measure, units = S["intensity_measure"], S["intensity_units"]
@@ -258,22 +263,22 @@ def plot_fragility(S, names, j, out):
     frs = [S["scenarios"][nm]["fragility"] for nm in names]
     states = frs[0]["states"]
     order = sorted(range(len(states)), key=lambda s: (not np.isnan(frs[0]["rotation_ratios"][s]), s))
-    fig, axes, _ = panels(len(states), width=11.0, height=3.8, ncols=2, legend_width=None)
+    fig, axes, _ = panels(len(states), width=11.0, height=4.6, ncols=2, legend_width=None)
     x = np.linspace(levels[0] * 0.5, levels[-1] * 1.02, 400)
     unit = intensity_unit_words(S)
     words = scenario_titles(S, names)
     spread = 0.006 * (levels[-1] - levels[0])
     for ax, s in zip(axes, order):
-        for k, (fr, w) in enumerate(zip(frs, words)):
-            colour = rsplot.run_colour(k)
+        for k, (fr, w, nm) in enumerate(zip(frs, words, names)):
+            colour = scenario_colour(S, nm)
             off = (k - (len(names) - 1) / 2) * spread   # side by side, so the bars do not hide each other
             f, lo, hi = fr["fraction"][s, j], fr["fraction_lo"][s, j], fr["fraction_hi"][s, j]
             ax.errorbar(levels + off, f, yerr=[np.maximum(f - lo, 0), np.maximum(hi - f, 0)], fmt=SCENARIO_MARKERS[k % len(SCENARIO_MARKERS)],
                         color=colour, ms=4, lw=0.8, capsize=2, alpha=0.9)
             status = fr["fit_status_names"][s, j]
             y = read_suite.fragility_curve(x, fr["median"][s, j], fr["beta"][s, j])
-            ls = "-" if status == "ok" else "--"
             drawn = status in ("ok", "zero_dispersion") and np.isfinite(y).any()
+            ls = ("-" if status == "ok" else "--") if drawn else ""
             ax.plot(x if drawn else [], y if drawn else [], color=colour, ls=ls, lw=2,
                     label=fit_label(w, fr, s, j, unit))
         state = states[s]
@@ -283,7 +288,7 @@ def plot_fragility(S, names, j, out):
         ax.set_xlim(0, levels[-1] * 1.03)
         ax.set_xlabel(intensity_label(S))
         ax.set_ylabel("P(state reached) [–]")
-        ax.legend(loc="lower right", fontsize=7.5)
+        ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.15), fontsize=8, frameon=False)
     fig.suptitle("Fragility of the block under the record suite: fraction of records reaching each state "
                  "(Wilson 95 % bars) and lognormal MLE fit\nblock {}; {}".format(
                      block_at(S, S["radius_m"][j]), suite_words(S)), fontsize=11)
