@@ -84,7 +84,7 @@ def suite_words(S):
     a = S["attrs"]
     words = "suite {} ({} records)".format(os.path.basename(a.get("suite_file", "?")), len(S["records"]["names"]))
     if a.get("complete") != 1:
-        words += "; partial file: {} of {} runs computed".format(a.get("n_done"), a.get("n_cells"))
+        words += "\npartial file: {} of {} runs computed".format(a.get("n_done"), a.get("n_cells"))
     return words
 
 

@@ -87,6 +87,9 @@ def test_values(path):
         check(ok.any() and np.allclose(at_median, 0.5), "{}: each ok fit is 0.5 at its median".format(name))
         check(np.all((fr["median_lo"][ok] < fr["median"][ok]) & (fr["median"][ok] < fr["median_hi"][ok])),
               "{}: median inside its interval".format(name))
+    check(list(read_suite.fragility_curve([0.1, 0.2, 0.3], 0.2, 0.0)) == [0.0, 1.0, 1.0]
+          and np.isnan(read_suite.fragility_curve([0.1], math.inf, math.nan)).all(),
+          "fragility_curve: a zero-dispersion fit is a step at its median, an infinite median no curve")
     # overturning is most likely for small blocks and free ones: medians in that order
     med = np.array([S["scenarios"][n]["fragility"]["median"][-1, :2] for n in S["scenarios"]])
     check(np.all(np.diff(med, axis=0) > 0) and np.all(np.diff(med, axis=1) > 0),
