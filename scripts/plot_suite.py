@@ -1,0 +1,340 @@
+#!/usr/bin/python3
+"""The three products of a record-suite file (`rocksweep suite`, docs/suite.md), one panel per
+anchorage scenario unless said otherwise:
+
+    plot_suite.py IN.h5 -o OUT [--scenario NAME ...] [--radius R]
+
+OUT_overturning.png/.pdf  first overturning PGA [g] of each record against the block size R
+                          (thin lines, one colour per record) and the suite median (thick);
+                          open markers: records that stand again at some higher level
+                          (safe_above = 1); triangles at the top: records that never overturn.
+                          With a single R: each record's first overturning PGA against its
+                          name, the bar reaching down to the PGA of the level below it.
+OUT_ida.png/.pdf          IDA curves at one R (--radius, default the first): theta_max/alpha
+                          against the intensity level, one line per record; runs that overturned
+                          sit in the grey "overturned" strip on the right.
+OUT_fragility.png/.pdf    fragility at one R, one panel per damage state (overturning first),
+                          the anchorages compared: empirical fraction of records reaching the
+                          state (points, Wilson 95 % bars) and the lognormal fit (lines; median
+                          and beta in the legend; a zero-dispersion fit is a dashed step, other
+                          degenerate fits are named and not drawn).
+
+A partial file (checkpoint) has no overturning or fragility groups: only OUT_ida is drawn, from
+the runs computed so far, and stderr says so.
+"""
+import math
+import os
+import sys
+
+import numpy as np
+from matplotlib.lines import Line2D
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import read_suite  # noqa: E402
+import rsplot  # noqa: E402
+from plot_spectra import scenario_titles  # noqa: E402
+from rsplot import plt  # noqa: E402
+
+ROTATION_CAP = 1.05          # theta_max/alpha beyond this (a block that stands) is drawn at the cap
+STRIP = (1.12, 1.3)          # the "overturned" strip of the IDA plot: each record a lane in it
+LINESTYLES = ("-", "--", ":", "-.")
+SCENARIO_MARKERS = ("o", "s", "D", "^", "v", "P", "X", "*")
+
+
+def record_style(i):
+    """Colour and line style of record i: the same in every figure and panel."""
+    return rsplot.run_colour(i), LINESTYLES[(i // len(rsplot.RUN_COLOURS)) % len(LINESTYLES)]
+
+
+def scenario_colour(S, name):
+    """A scenario's colour, by its place in the file: the same whatever --scenario picks."""
+    return rsplot.run_colour(int(S["scenarios"][name]["attrs"].get("index", 0)))
+
+
+def intensity_label(S):
+    """The intensity axis in words with its unit."""
+    measure, units = S["intensity_measure"], S["intensity_units"]
+    words = {"pga_g": "PGA of the scaled record [g]",
+             "pgv_m_s": "PGV of the scaled record [{}]".format(units),
+             "pga_ratio": r"PGA / ($g \tan\alpha$) [–]",
+             "scale": "scale factor of the record [–]"}
+    if measure in words:
+        return words[measure]
+    return "{} [{}]".format(S["intensity_long_name"] or measure, "–" if units in ("1", "") else units)
+
+
+def intensity_unit_words(S):
+    """The intensity's unit after a number: ' g', ' m/s' or ''."""
+    if S["intensity_measure"] == "pga_g":
+        return " g"
+    return "" if S["intensity_units"] in ("1", "") else " " + S["intensity_units"]
+
+
+def block_at(S, radius):
+    """The block of size R in words (2b, 2h, alpha, p scale with R at fixed alpha: p ~ R^-1/2)."""
+    a = S["attrs"]
+    k = radius / a["radius_m"] if a.get("radius_m") else None
+    if k is None:
+        return "R = {:g} m".format(radius)
+    return "R = {:g} m: {}".format(radius, rsplot.block_words(
+        a["half_width_m"] * k, a["half_height_m"] * k, a.get("alpha_rad"), a["p_rad_s"] / math.sqrt(k)))
+
+
+def suite_words(S):
+    a = S["attrs"]
+    words = "suite {} ({} records)".format(os.path.basename(a.get("suite_file", "?")), len(S["records"]["names"]))
+    if a.get("complete") != 1:
+        words += "\npartial file: {} of {} runs computed".format(a.get("n_done"), a.get("n_cells"))
+    return words
+
+
+def panels(n, width=11.0, height=4.6, ncols=None, sharey=True, legend_width=0.55):
+    """A figure of n panels (up to 3 a row, or ncols) and a legend column on the right (none if
+    legend_width is None). Returns (fig, panel axes, legend axis or None)."""
+    ncols = ncols or min(n, 3)
+    nrows = int(math.ceil(n / ncols))
+    fig = plt.figure(figsize=(width, height * nrows + 1.0), layout="constrained")
+    if legend_width is None:
+        grid = fig.add_gridspec(nrows, ncols)
+    else:
+        grid = fig.add_gridspec(nrows, ncols + 1, width_ratios=[1.0] * ncols + [legend_width])
+    axes = []
+    for k in range(n):
+        share = axes[0] if sharey and axes else None
+        axes.append(fig.add_subplot(grid[k // ncols, k % ncols], sharey=share))
+    if legend_width is None:
+        return fig, axes, None
+    legend_ax = fig.add_subplot(grid[:, ncols])
+    legend_ax.axis("off")
+    return fig, axes, legend_ax
+
+
+def record_legend(names):
+    handles = [Line2D([], [], color=record_style(i)[0], ls=record_style(i)[1], lw=1.5, label=nm)
+               for i, nm in enumerate(names)]
+    return handles
+
+
+# --------------------------------------------------------------------------- overturning
+
+
+def level_pga(S, intensity):
+    """The PGA [g] each record had at the given intensity levels [record, ...] (NaN where NaN)."""
+    levels = S["intensity"]
+    pga = S["records"]["pga_scaled_g"]
+    out = np.full(np.shape(intensity), np.nan)
+    for idx in np.ndindex(out.shape):
+        x = intensity[idx]
+        if np.isfinite(x):
+            out[idx] = pga[idx[0], int(np.argmin(np.abs(levels - x)))]
+    return out
+
+
+def suite_median(first_pga):
+    """Median over records [radius]; a record that never overturns counts as above every level
+    (its capacity is censored there), so the median exists while fewer than half never do."""
+    v = np.where(np.isnan(first_pga), np.inf, first_pga)
+    med = np.median(v, axis=0)
+    return np.where(np.isfinite(med), med, np.nan)
+
+
+def plot_overturning(S, names, out):
+    radii = S["radius_m"]
+    recs = S["records"]["names"]
+    top = S["records"]["pga_scaled_g"][:, -1]
+    fig, axes, legend_ax = panels(len(names), height=4.8 if len(radii) > 1 else 5.6)
+    ymax = 1.1 * max(np.nanmax(top), 1e-9)
+    for ax, name, title in zip(axes, names, scenario_titles(S, names)):
+        ov = S["scenarios"][name]["overturning"]
+        first, safe_above = ov["first_pga_g"], ov["safe_above"] != 0
+        never = np.isnan(first)
+        if len(radii) > 1:
+            x = np.broadcast_to(radii, first.shape)
+            for i in range(len(recs)):
+                colour, ls = record_style(i)
+                ax.plot(radii, first[i], color=colour, ls=ls, lw=1.0, alpha=0.85)
+            draw_markers(ax, x, first, safe_above, never, top)
+            med = suite_median(first)
+            ax.plot(radii, med, color="k", lw=3.0, marker="o", ms=6, zorder=5)
+            ax.set_xscale("log")
+            ax.set_xticks(radii, ["{:g}".format(r) for r in radii])
+            ax.minorticks_off()
+            ax.set_xlabel("block size R [m]")
+            for r, n_never, y in zip(radii, never.sum(axis=0), top.max() * np.ones(len(radii))):
+                if n_never:
+                    ax.annotate("{} never".format(n_never), (r, y), xytext=(0, 7), textcoords="offset points",
+                                ha="center", fontsize=8)
+        else:
+            below = level_pga(S, ov["below_intensity"])[:, 0]
+            x = np.arange(len(recs))
+            for i in range(len(recs)):
+                if not never[i, 0]:
+                    lo = below[i] if np.isfinite(below[i]) else 0.0
+                    ax.plot([i, i], [lo, first[i, 0]], color=record_style(i)[0], lw=4, alpha=0.45,
+                            solid_capstyle="butt")
+            draw_markers(ax, x[:, None], first, safe_above, never, top)
+            med = suite_median(first)[0]
+            if np.isfinite(med):
+                ax.axhline(med, color="k", lw=2.5)
+            ax.set_xticks(x, recs, rotation=60, ha="right", fontsize=8)
+            ax.set_xlabel("record")
+        ax.set_title(title)
+        ax.set_ylim(0, ymax)
+    axes[0].set_ylabel("first overturning PGA [g]")
+    handles = [
+        Line2D([], [], color="k", lw=3.0 if len(radii) > 1 else 2.5, label="suite median"),
+        Line2D([], [], color="0.3", marker="o", ls="", label="first overturning level"),
+        Line2D([], [], color="0.3", marker="o", mfc="white", ls="", label="stands again at a higher level (safe_above)"),
+        Line2D([], [], color="0.3", marker="^", ls="", label="never overturns (PGA of the top level)"),
+    ]
+    if len(radii) > 1:
+        handles += record_legend(recs)
+    else:
+        handles.insert(1, Line2D([], [], color="0.5", lw=4, alpha=0.45, label="PGA of the level below to the first"))
+    legend_ax.legend(handles=handles, loc="center left", fontsize=8, frameon=False)
+    fig.suptitle("Overturning acceleration of the record suite: first overturning PGA\n{}; {}".format(
+        "block " + block_at(S, radii[0]) if len(radii) == 1 else "blocks R = {} m at the same slenderness α = {:.4g} rad".format(
+            ", ".join("{:g}".format(r) for r in radii), S["attrs"]["alpha_rad"]), suite_words(S)), fontsize=11)
+    return rsplot.save(fig, out)
+
+
+def draw_markers(ax, x, first, safe_above, never, top):
+    """Filled: a plain first level; open: safe_above; triangle at the record's top PGA: never."""
+    for i in range(first.shape[0]):
+        colour = record_style(i)[0]
+        plain = ~never[i] & ~safe_above[i]
+        ax.plot(x[i][plain], first[i][plain], "o", color=colour, ms=5, ls="")
+        ax.plot(x[i][safe_above[i]], first[i][safe_above[i]], "o", mfc="white", mec=colour, mew=1.6, ms=7, ls="")
+        ax.plot(x[i][never[i]], np.full(np.count_nonzero(never[i]), top[i]), "^", color=colour, ms=7, ls="")
+
+
+# --------------------------------------------------------------------------- IDA
+
+
+def plot_ida(S, names, j, out):
+    recs = S["records"]["names"]
+    levels = S["intensity"]
+    fig, axes, legend_ax = panels(len(names), height=4.8)
+    for ax, name, title in zip(axes, names, scenario_titles(S, names)):
+        sc = S["scenarios"][name]
+        out_, rot, done = sc["outcome"][:, j], sc["max_rotation"][:, j], sc["done"][:, j] == 1
+        fell = (out_ == 1) | (out_ == 2)
+        lanes = STRIP[0] + (np.arange(len(recs)) + 0.5) / len(recs) * (STRIP[1] - STRIP[0])
+        for i in range(len(recs)):   # each record its own lane in the strip, so the lines stay apart
+            x = np.where(fell[i], lanes[i], np.minimum(rot[i], ROTATION_CAP))
+            x = np.where(done[i] & (out_[i] != 255), x, np.nan)   # pending or not converged: a gap
+            colour, ls = record_style(i)
+            ax.plot(x, levels, color=colour, ls=ls, lw=1.3)
+            ax.plot(np.where(fell[i], np.nan, x), levels, ".", color=colour, ms=5)   # the runs that stood
+        ax.axvspan(*STRIP, color="0.85", zorder=0)
+        ax.text(sum(STRIP) / 2, 0.02, "overturned", rotation=90, transform=ax.get_xaxis_transform(),
+                ha="center", va="bottom", fontsize=8, color="0.25")
+        ax.set_xlim(0, STRIP[1])
+        ax.set_xticks([0, 0.25, 0.5, 0.75, 1.0])
+        ax.set_xlabel(r"max rotation $\theta_{max}/\alpha$ [–]")
+        ax.set_title(title)
+        n_bad = int(np.count_nonzero(done & (out_ == 255)))
+        if n_bad:
+            ax.text(0.02, 0.98, "{} run(s) not converged: left out".format(n_bad), transform=ax.transAxes,
+                    va="top", fontsize=8)
+    axes[0].set_ylabel(intensity_label(S))
+    axes[0].set_ylim(0, levels[-1] * 1.03)
+    legend_ax.legend(handles=record_legend(recs), loc="center left", fontsize=8, frameon=False)
+    fig.suptitle(r"IDA curves of the record suite ($\theta_{{max}}/\alpha$ above {:g} drawn at {:g})" "\nblock {}; {}".format(
+        ROTATION_CAP, ROTATION_CAP, block_at(S, S["radius_m"][j]), suite_words(S)), fontsize=11)
+    return rsplot.save(fig, out)
+
+
+# --------------------------------------------------------------------------- fragility
+
+
+def fit_label(words, fr, s, j, unit):
+    status = fr["fit_status_names"][s, j]
+    med, beta = fr["median"][s, j], fr["beta"][s, j]
+    if status == "ok":
+        return r"{}: $\hat\theta$ = {:.3g}{}, $\hat\beta$ = {:.2f}".format(words, med, unit, beta)
+    if status == "zero_dispersion" and np.isfinite(med):
+        return r"{}: step at {:.3g}{} ($\beta$ = 0, dashed)".format(words, med, unit)
+    return "{}: no fit ({})".format(words, status.replace("_", " "))
+
+
+def plot_fragility(S, names, j, out):
+    levels = S["intensity"]
+    frs = [S["scenarios"][nm]["fragility"] for nm in names]
+    states = frs[0]["states"]
+    order = sorted(range(len(states)), key=lambda s: (not np.isnan(frs[0]["rotation_ratios"][s]), s))
+    fig, axes, _ = panels(len(states), width=11.0, height=4.6, ncols=2, legend_width=None)
+    x = np.linspace(levels[0] * 0.5, levels[-1] * 1.02, 400)
+    unit = intensity_unit_words(S)
+    words = scenario_titles(S, names)
+    spread = 0.006 * (levels[-1] - levels[0])
+    for ax, s in zip(axes, order):
+        for k, (fr, w, nm) in enumerate(zip(frs, words, names)):
+            colour = scenario_colour(S, nm)
+            off = (k - (len(names) - 1) / 2) * spread   # side by side, so the bars do not hide each other
+            f, lo, hi = fr["fraction"][s, j], fr["fraction_lo"][s, j], fr["fraction_hi"][s, j]
+            ax.errorbar(levels + off, f, yerr=[np.maximum(f - lo, 0), np.maximum(hi - f, 0)], fmt=SCENARIO_MARKERS[k % len(SCENARIO_MARKERS)],
+                        color=colour, ms=4, lw=0.8, capsize=2, alpha=0.9)
+            status = fr["fit_status_names"][s, j]
+            y = read_suite.fragility_curve(x, fr["median"][s, j], fr["beta"][s, j])
+            drawn = status in ("ok", "zero_dispersion") and np.isfinite(y).any()
+            ls = ("-" if status == "ok" else "--") if drawn else ""
+            ax.plot(x if drawn else [], y if drawn else [], color=colour, ls=ls, lw=2,
+                    label=fit_label(w, fr, s, j, unit))
+        state = states[s]
+        ax.set_title("overturning" if state == "overturning" else
+                     r"$\theta_{{max}}/\alpha \geq$ {:g}".format(frs[0]["rotation_ratios"][s]))
+        ax.set_ylim(-0.03, 1.03)
+        ax.set_xlim(0, levels[-1] * 1.03)
+        ax.set_xlabel(intensity_label(S))
+        ax.set_ylabel("P(state reached) [–]")
+        ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.15), fontsize=8, frameon=False)
+    fig.suptitle("Fragility of the block under the record suite: fraction of records reaching each state "
+                 "(Wilson 95 % bars) and lognormal MLE fit\nblock {}; {}".format(
+                     block_at(S, S["radius_m"][j]), suite_words(S)), fontsize=11)
+    return rsplot.save(fig, out)
+
+
+# --------------------------------------------------------------------------- command line
+
+
+def radius_index(S, radius, p):
+    radii = S["radius_m"]
+    if radius is None:
+        return 0
+    j = int(np.argmin(np.abs(radii - radius)))
+    if not math.isclose(radii[j], radius, rel_tol=1e-6):
+        p.error("no block size R = {:g} m in the file; it holds {} m".format(
+            radius, ", ".join("{:g}".format(r) for r in radii)))
+    return j
+
+
+def main(argv):
+    p = rsplot.parser(__doc__, "suite file (rocksweep suite -o IN.h5)", n_inputs=1)
+    p.add_argument("--scenario", nargs="+", help="only these scenarios (default: all, in config order)")
+    p.add_argument("--radius", type=float, metavar="R", help="block size R [m] of the IDA and fragility figures "
+                                                              "(default: the file's first)")
+    args = p.parse_args(argv)
+    path = args.inputs[0]
+    try:
+        S = read_suite.load(path, args.scenario)
+    except read_suite.SuiteFileError as e:
+        raise SystemExit("plot_suite.py: {}".format(e))
+    names = list(S["scenarios"])
+    j = radius_index(S, args.radius, p)
+    stem = rsplot.output_stem(args.output)
+    plot_ida(S, names, j, stem + "_ida")
+    missing = [nm for nm in names if S["scenarios"][nm]["overturning"] is None
+               or S["scenarios"][nm]["fragility"] is None]
+    if missing:
+        sys.stderr.write("plot_suite.py: {}: no overturning/fragility groups for {} (the sweep is not complete: "
+                         "{} of {} runs): drew {}_ida only\n".format(path, ", ".join(missing), S["attrs"].get("n_done"),
+                                                                     S["attrs"].get("n_cells"), stem))
+        return 0
+    plot_overturning(S, names, stem + "_overturning")
+    plot_fragility(S, names, j, stem + "_fragility")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
