@@ -10,7 +10,7 @@ OUT_overturning.png/.pdf  first overturning PGA [g] of each record against the b
                           (safe_above = 1); triangles at the top: records that never overturn.
                           With a single R: each record's first overturning PGA against its
                           name, the bar reaching down to the PGA of the level below it.
-OUT_ida.png/.pdf          IDA curves at one R (--radius, default the first): theta_max/alpha
+OUT_ida.png/.pdf          IDA curves at one R (--radius, default the configured block's): theta_max/alpha
                           against the intensity level, one line per record; runs that overturned
                           sit in the grey "overturned" strip on the right.
 OUT_fragility.png/.pdf    fragility at one R, one panel per damage state (overturning first),
@@ -156,14 +156,9 @@ def plot_overturning(S, names, out):
             draw_markers(ax, x, first, safe_above, never, top)
             med = suite_median(first)
             ax.plot(radii, med, color="k", lw=3.0, marker="o", ms=6, zorder=5)
-            ax.set_xscale("log")
-            ax.set_xticks(radii, ["{:g}".format(r) for r in radii])
-            ax.minorticks_off()
+            # Linear R with plain ticks: the sizes are evenly spaced, and their full digits would
+            # run into each other; how many records never overturn is read off the triangles.
             ax.set_xlabel("block size R [m]")
-            for r, n_never, y in zip(radii, never.sum(axis=0), top.max() * np.ones(len(radii))):
-                if n_never:
-                    ax.annotate("{} never".format(n_never), (r, y), xytext=(0, 7), textcoords="offset points",
-                                ha="center", fontsize=8)
         else:
             below = level_pga(S, ov["below_intensity"])[:, 0]
             x = np.arange(len(recs))
@@ -193,8 +188,8 @@ def plot_overturning(S, names, out):
         handles.insert(1, Line2D([], [], color="0.5", lw=4, alpha=0.45, label="PGA of the level below to the first"))
     legend_ax.legend(handles=handles, loc="center left", fontsize=8, frameon=False)
     fig.suptitle("Overturning acceleration of the record suite: first overturning PGA\n{}; {}".format(
-        "block " + block_at(S, radii[0]) if len(radii) == 1 else "blocks R = {} m at the same slenderness α = {:.4g} rad".format(
-            ", ".join("{:g}".format(r) for r in radii), S["attrs"]["alpha_rad"]), suite_words(S)), fontsize=11)
+        "block " + block_at(S, radii[0]) if len(radii) == 1 else "{} block sizes R = {:.3g} to {:.3g} m at α = {:.4g} rad".format(
+            len(radii), radii[0], radii[-1], S["attrs"]["alpha_rad"]), suite_words(S)), fontsize=11)
     return rsplot.save(fig, out)
 
 
@@ -300,8 +295,9 @@ def plot_fragility(S, names, j, out):
 
 def radius_index(S, radius, p):
     radii = S["radius_m"]
-    if radius is None:
-        return 0
+    if radius is None:  # the configured block's own size, or the nearest to it
+        own = S["attrs"].get("radius_m")
+        return int(np.argmin(np.abs(radii - own))) if own else 0
     j = int(np.argmin(np.abs(radii - radius)))
     if not math.isclose(radii[j], radius, rel_tol=1e-6):
         p.error("no block size R = {:g} m in the file; it holds {} m".format(
@@ -313,7 +309,7 @@ def main(argv):
     p = rsplot.parser(__doc__, "suite file (rocksweep suite -o IN.h5)", n_inputs=1)
     p.add_argument("--scenario", nargs="+", help="only these scenarios (default: all, in config order)")
     p.add_argument("--radius", type=float, metavar="R", help="block size R [m] of the IDA and fragility figures "
-                                                              "(default: the file's first)")
+                                                              "(default: the one nearest the configured block's)")
     args = p.parse_args(argv)
     path = args.inputs[0]
     try:

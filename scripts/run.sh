@@ -10,12 +10,8 @@
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 source "$here/scripts/setup.sh"
-res="$here/results" rs="$here/build/rocksweep" cfg="$here/configs/smatteo.toml" py=/usr/bin/python3
-mkdir -p "$res"
-mpi_flags=(-np 2)
-[ "$(id -u)" -eq 0 ] && mpi_flags+=(--allow-run-as-root)
-mpi_flags+=(--oversubscribe)
-mpirun "${mpi_flags[@]}" "$rs" sweep --config "$cfg" -o "$res/smatteo.h5" --overwrite "$@"
+cfg="$here/configs/smatteo.toml"
+mpirun "${mpi_run[@]}" "$rs" sweep --config "$cfg" -o "$res/smatteo.h5" --overwrite "$@"
 
 # One time history per anchorage at the paper's sample case, w_p/p = 4, a_p0/(alpha g) = 2.7.
 for a in free constant adaptive; do

@@ -7,14 +7,10 @@
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 source "$here/scripts/setup.sh"
-res="$here/results" rs="$here/build/rocksweep" py=/usr/bin/python3
-mkdir -p "$res" "$here/docs/figures"
-mpi_flags=(-np 2)
-[ "$(id -u)" -eq 0 ] && mpi_flags+=(--allow-run-as-root)
-mpi_flags+=(--oversubscribe)
+mkdir -p "$here/docs/figures"
 for family in one_sine n_sine cycloidal_b cycloidal_c ricker rectangle; do
   out="$res/pulse_$family"
-  mpirun "${mpi_flags[@]}" "$rs" sweep --config "$here/configs/pulse_$family.toml" -o "$out.h5" --overwrite --quiet "$@"
+  mpirun "${mpi_run[@]}" "$rs" sweep --config "$here/configs/pulse_$family.toml" -o "$out.h5" --overwrite --quiet "$@"
   $py "$here/scripts/plot_spectra.py" "$out.h5" -o "$out"
   cp "$out.png" "$here/docs/figures/pulse_$family.png"
   echo "pulse $family: $out.h5, $out.png"

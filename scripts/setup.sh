@@ -22,3 +22,8 @@ fi
 jobs="$(nproc 2>/dev/null || echo 2)"
 cmake -S "$here" -B "$here/build" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$here/build" -j "$jobs"
+# What the run scripts start their 2-rank jobs with: mpirun "${mpi_run[@]}" ...
+mpi_run=(-np 2 --oversubscribe)
+[ "$(id -u)" -eq 0 ] && mpi_run+=(--allow-run-as-root)
+res="$here/results" rs="$here/build/rocksweep" py=/usr/bin/python3
+mkdir -p "$res"

@@ -2,6 +2,7 @@
 // every scenario; scheduled, checkpointed and resumed like `rocksweep sweep`.
 #include "rocksweep/app/suite_command.hpp"
 
+#include <cmath>
 #include <iomanip>
 #include <optional>
 
@@ -107,14 +108,18 @@ void prepare_output(Start& s, const Plan& plan, const SweepCommand& cmd, std::os
             << (s.complete ? "" : std::to_string(s.results.done_count()) + " of " + std::to_string(s.results.size()) + " cells already done\n");
 }
 
-/// One line per scenario: where the fragility of overturning lies (first block size).
+/// One line per scenario: where the fragility of overturning lies, for the block size nearest
+/// the configured block's.
 void summarise(const Plan& plan, const SweepResults& r, std::ostream& log) {
     const SuiteSpec& spec = plan.spec;
+    std::size_t j = 0;
+    for (std::size_t k = 1; k < spec.radii_m.size(); ++k)
+        if (std::abs(spec.radii_m[k] - spec.block.radius_m) < std::abs(spec.radii_m[j] - spec.block.radius_m)) j = k;
     const char* units = spec.measure == IntensityMeasure::pga_g ? " g" : spec.measure == IntensityMeasure::pgv_m_s ? " m/s" : "";
     log << std::setprecision(3) << "overturning fragility against " << intensity_long_name(spec.measure) << " (R = "
-        << spec.radii_m.front() << " m):\n";
+        << spec.radii_m[j] << " m):\n";
     for (std::size_t s = 0; s < spec.scenarios.size(); ++s) {
-        const FragilityFit fit = suite_fragility(spec, r, s, {plan.states.back()}).fits.front();
+        const FragilityFit fit = suite_fragility(spec, r, s, {plan.states.back()}).fits.at(j);
         log << "  " << std::left << std::setw(22) << spec.scenarios[s].name << std::right;
         if (fit.status == FitStatus::ok)
             log << "median " << fit.curve.median << units << " (95 % " << fit.median_lo << " to " << fit.median_hi << "), beta "

@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# The S. Matteo block under the shared record suite (configs/suite_smatteo.toml: free /
+# constant theta_f = alpha / adaptive K_min = 0.1 K_max, PGA 0.05-1.5 g, R = 0.39-3.89 m), on 2
+# MPI ranks, and its three products (docs/suite.md):
+#   results/suite.h5                                      the runs, spectra and fragility fits
+#   results/suite_{overturning,ida,fragility}.png|pdf     the figures, the PNGs also in docs/figures/
+# Extra arguments go to rocksweep suite.
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+source "$here/scripts/setup.sh"
+mkdir -p "$here/docs/figures"
+cd "$here"  # the config names its suite relative to the repository root
+mpirun "${mpi_run[@]}" "$rs" suite --config configs/suite_smatteo.toml -o "$res/suite.h5" --overwrite "$@"
+$py scripts/plot_suite.py "$res/suite.h5" -o "$res/suite"
+for product in overturning ida fragility; do
+  cp "$res/suite_$product.png" "docs/figures/suite_$product.png"
+done
+echo "suite: $res/suite.h5, $res/suite_{overturning,ida,fragility}.png"
