@@ -74,7 +74,7 @@ def draw_curve(ax, x, curve, a, colour, unit):
     free = a["free_safe_fraction"]
     ax.axhline(free, color="k", ls="--", lw=1.0, label="free-standing: {:.3f}".format(free))
     ax.set_xscale("log")
-    ax.set_ylabel("safe fraction of the hazard region")
+    ax.set_ylabel("safe fraction of the hazard")
     values = np.concatenate([np.ravel(v) for v in shown])
     ax.set_ylim(float(values.min()) - 0.05, float(values.max()) + 0.08)
 
@@ -118,13 +118,23 @@ def plot(D, out):
         limits.append(r"max $|\theta|/\alpha$ ≤ {:g}".format(a["max_rotation_ratio"]))
     if a.get("object_force_N", 0) > 0:
         limits.append("force on the object ≤ {:.3g} kN".format(a["object_force_N"] / 1e3))
-    w, amp = a["omega_ratio_range"], a["amplitude_ratio_range"]
-    region = (r"one-sine pulses, $\omega_p/p$ ∈ [{:g}, {:g}] × $a_{{p0}}/(\alpha g)$ ∈ [{:g}, {:g}]"
-              " ({} × {} nodes)").format(w[0], w[1], amp[0], amp[1], a["omega_ratio_points"], a["amplitude_ratio_points"])
     head = rsplot.block_words(a["half_width_m"], None, a["alpha_rad"], a["p_rad_s"])
-    fig.suptitle("Anchorage design: safe (not overturned{}) share of the region\n{}; block {}".format(
-        ", " + ", ".join(limits) if limits else "", region, head), fontsize=11)
+    fig.suptitle("Anchorage design: safe (not overturned{}) share of the {}\n{}; block {}".format(
+        ", " + ", ".join(limits) if limits else "", "runs" if "suite_file" in a else "region", hazard_words(a), head),
+        fontsize=11)
     return rsplot.save(fig, out)
+
+
+def hazard_words(a):
+    """The hazard the design file was searched over, in words: a pulse region or a record suite."""
+    if "suite_file" in a:
+        lo, hi = a["intensity_range"]
+        unit = {"pga_g": " g", "pgv_m_s": " m/s"}.get(a["intensity_measure"], "")
+        return "{} records of {} at {} levels of {} from {:g} to {:g}{}".format(
+            a["records"], os.path.basename(a["suite_file"]), a["intensity_points"], a["intensity_measure"], lo, hi, unit)
+    w, amp = a["omega_ratio_range"], a["amplitude_ratio_range"]
+    return (r"one-sine pulses, $\omega_p/p$ ∈ [{:g}, {:g}] × $a_{{p0}}/(\alpha g)$ ∈ [{:g}, {:g}]"
+            " ({} × {} nodes)").format(w[0], w[1], amp[0], amp[1], a["omega_ratio_points"], a["amplitude_ratio_points"])
 
 
 def main(argv):

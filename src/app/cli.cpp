@@ -341,7 +341,7 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
         app.parse(argc, argv);
         const CLI::App* chosen = app.get_subcommands().at(0);
         check_combinations(app, chosen->get_name(), opts, args);
-        if (*design) check_design_options(app, args);
+        if (*design) check_design_options(app, args, design_cmd);
         if (*basin) check_basin_options(app, args);
         if (*suite) check_suite_options(app, args, suite_cmd);
     } catch (const CLI::Success& e) {  // --help, --help-all, --version: to stdout, once

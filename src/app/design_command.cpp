@@ -16,6 +16,7 @@
 
 #include "rocksweep/design/design_criterion.hpp"
 #include "rocksweep/io/design_file.hpp"
+#include "rocksweep/io/suite_file.hpp"
 #include "rocksweep/design/design_search.hpp"
 #include "rocksweep/core/errors.hpp"
 #include "rocksweep/app/option_checks.hpp"
@@ -54,11 +55,23 @@ void add_design_options(CLI::App& design, DesignCommand& cmd) {
     design.add_option("--near-optimal", cmd.near_optimal,
                       "Report the range of values, around the best, whose safe fraction is within this of the best")
         ->check(number_in(0, 1, ""))->capture_default_str()->group(grp);
+    add_suite_hazard_options(design, cmd.hazard);
 }
 
-void check_design_options(const CLI::App& app, const std::vector<std::string>& args) {
+void check_design_options(const CLI::App& app, const std::vector<std::string>& args, const DesignCommand& cmd) {
     refuse_typed(app, args, {"--anchorages", "--theta-f-ratios", "--kmin-ratios", "--scenario"},
                  "an option of sweep and info only; design chooses its scenarios (--stiffness-range, --kmin-ratio-range)");
+    if (cmd.hazard.suite.empty()) {
+        refuse_typed(app, args, {"--intensity-measure", "--intensity-range", "--intensity-points"},
+                     "an option of design --suite (the hazard is the pulse region without it)");
+        return;
+    }
+    refuse_typed(app, args,
+                 {"--omega-ratio-range", "--omega-ratio-points", "--amplitude-ratio-range", "--amplitude-ratio-points", "--phase",
+                  "--vertical-amplitude", "--vertical-phase", "--cycles"},
+                 "an option of the pulse region; with --suite the hazard is the suite's records");
+    if (cmd.run.refine_stride != 0)
+        throw InputError("refine", std::to_string(cmd.run.refine_stride), "0 with --suite (refinement is for pulse regions)");
 }
 
 namespace {
@@ -163,20 +176,35 @@ struct Ledger {
         return p;
     }
 
-    /// Scores the round's sweep, read back from its file (scenarios in round_options' order).
-    void add_round(const Options& round_opts, const RoundValues& v, const std::string& path, const IntegratorSettings& settings,
-                   const DesignConstraints& limits, int round) {
-        const SweepSpec spec = make_sweep_spec(round_opts);
-        const SweepResults r = read_spectra_results(path, spec, settings);
+    /// Takes the round's scores, one per scenario in round_options' order.
+    void add_round(const RoundValues& v, const std::vector<Scenario>& scenarios, const std::vector<RegionScore>& scores, int round) {
         std::size_t s = 0;
-        if (round == 0) free = score_scenario(spec, r, s++, limits);
+        if (round == 0) free = scores[s++];
         for (double x : v.log_k) {
-            const Scenario& sc = spec.scenarios[s];
-            constant.push_back({x, sc.anchorage.k_max, sc.theta_f_ratio, score_scenario(spec, r, s++, limits), round});
+            constant.push_back({x, scenarios[s].anchorage.k_max, scenarios[s].theta_f_ratio, scores[s], round});
+            ++s;
         }
-        for (double x : v.log_rho) adaptive.push_back({x, rho_of(x), 0.0, score_scenario(spec, r, s++, limits), round});
+        for (double x : v.log_rho) adaptive.push_back({x, rho_of(x), 0.0, scores[s++], round});
     }
 };
+
+/// The round's file read back and scored, a score per scenario: area shares of the region, or
+/// shares of the suite's runs.
+std::vector<RegionScore> round_scores(const Options& round_opts, const DesignCommand& cmd, const std::string& path,
+                                      const IntegratorSettings& settings, const DesignConstraints& limits) {
+    std::vector<RegionScore> scores;
+    if (cmd.hazard.suite.empty()) {
+        const SweepSpec spec = make_sweep_spec(round_opts);
+        const SweepResults r = read_spectra_results(path, spec, settings);
+        for (std::size_t s = 0; s < spec.scenarios.size(); ++s) scores.push_back(score_scenario(spec, r, s, limits));
+    } else {
+        const SuiteSpec spec = make_suite_spec(round_opts, cmd.hazard);
+        const SweepResults r = read_suite_results(path, spec, settings);
+        const std::size_t per = spec.cells_per_scenario();
+        for (std::size_t s = 0; s < spec.scenarios.size(); ++s) scores.push_back(score_cells(r, s * per, per, limits));
+    }
+    return scores;
+}
 
 DesignCurve curve_of(std::vector<Evaluation> e, bool with_theta_f, double near_optimal) {
     std::stable_sort(e.begin(), e.end(), [](const Evaluation& a, const Evaluation& b) { return a.x < b.x; });
@@ -219,7 +247,7 @@ void claim_output(std::optional<OutputClaim>& claim, const SweepCommand& run) {
 
 void print_summary(std::ostream& log, const DesignReport& r) {
     const DesignCurve &c = r.constant, &a = r.adaptive;
-    log << std::setprecision(4) << "design: safe fraction of the region, free-standing " << r.free.acceptable << "\n"
+    log << std::setprecision(4) << "design: safe fraction of the hazard, free-standing " << r.free.acceptable << "\n"
         << "  constant K:    best K = " << c.variable[c.optimum] << " N/m (theta_f = " << c.theta_f_ratio[c.optimum]
         << " alpha), safe fraction " << c.acceptable[c.optimum] << " (" << c.variable.size() << " values; within "
         << r.near_optimal << " of it from " << c.variable[c.near_lo] << " to " << c.variable[c.near_hi] << ")\n"
@@ -259,13 +287,17 @@ int run_design(const Options& opts, const DesignCommand& cmd, const std::string&
         if (!cmd.run.quiet)
             log << "design round " << round << ": " << values.log_k.size() << " values of K, " << values.log_rho.size()
                 << " of K_min/K_max -> " << run.output << "\n";
-        const int status = broadcast(run_sweep(round_opts, run, config_text, mpi), mpi);
+        SuiteCommand suite = cmd.hazard;
+        suite.run = run;
+        const int status =
+            broadcast(suite.suite.empty() ? run_sweep(round_opts, run, config_text, mpi) : run_suite(round_opts, suite, config_text, mpi), mpi);
         if (status != 0) {
             if (status != 2) log << "design stopped in round " << round << "; rerun it with --resume to continue\n";
             return mpi.is_root() ? status : 0;
         }
         if (mpi.is_root()) {
-            ledger.add_round(round_opts, values, run.output, settings, problem.limits, round);
+            ledger.add_round(values, make_sweep_spec(round_opts).scenarios,
+                             round_scores(round_opts, cmd, run.output, settings, problem.limits), round);
             values.log_k = by_k.next_round(round + 1, Ledger::points(ledger.constant));
             values.log_rho = by_rho.next_round(round + 1, Ledger::points(ledger.adaptive));
         }
@@ -288,6 +320,11 @@ int run_design(const Options& opts, const DesignCommand& cmd, const std::string&
     report.stiffness_search = problem.stiffness;
     report.kmin_search = problem.kmin;
     report.refine_stride = cmd.run.refine_stride;
+    if (!cmd.hazard.suite.empty()) {
+        const SuiteSpec spec = make_suite_spec(opts, cmd.hazard);
+        report.suite = SuiteHazard{cmd.hazard.suite, to_string(spec.measure), intensity_units(spec.measure), spec.intensity,
+                                   spec.records.size()};
+    }
     const Provenance prov{ROCKSWEEP_VERSION, config_text, utc_now(), mpi.size(), MPI_Wtime() - t0};
     try {
         write_design(cmd.run.output, report, prov);

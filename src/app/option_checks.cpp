@@ -130,8 +130,12 @@ void refuse_typed(const CLI::App& app, const std::vector<std::string>& args, con
         const bool typed = std::any_of(args.begin(), args.end(),
                                        [&](const std::string& a) { return a == name || a.rfind(name + "=", 0) == 0; });
         if (!typed) continue;
+        // The option is the app's (model options) or a subcommand's own.
+        const CLI::Option* opt = app.get_option_no_throw(name);
+        for (const CLI::App* sub : app.get_subcommands({})) opt = opt ? opt : sub->get_option_no_throw(name);
         std::string value;
-        for (const std::string& r : app.get_option(name)->results()) value += (value.empty() ? "" : " ") + r;
+        if (opt)
+            for (const std::string& r : opt->results()) value += (value.empty() ? "" : " ") + r;
         throw InputError(name.substr(2), value, why);
     }
 }

@@ -21,21 +21,26 @@
 
 namespace rocksweep {
 
+void add_suite_hazard_options(CLI::App& sub, SuiteCommand& cmd) {
+    sub.add_option("--suite", cmd.suite, "Suite of records: CSV with name, file, format, units, ... (docs/records.md)")
+        ->check(existing_file("a record suite (CSV)"));
+    sub.add_option("--intensity-measure", cmd.measure,
+                   "What the levels measure: pga (PGA [g]), pgv (PGV [m/s]), pga-ratio (PGA / (g tan alpha)), "
+                   "scale (the factor itself)")
+        ->check(one_of({"pga", "pgv", "pga-ratio", "scale"}))->capture_default_str();
+    sub.add_option("--intensity-range", cmd.intensity_range, "Levels from LO to HI, in the measure's unit")
+        ->expected(2)->check(number_in(0, 1e3, "", true))->capture_default_str();
+    sub.add_option("--intensity-points", cmd.intensity_points, "Levels, evenly spaced, both ends included")
+        ->check(integer_in(1, 100000))->capture_default_str();
+}
+
 CLI::App* add_suite_command(CLI::App& app, SuiteCommand& cmd) {
     CLI::App* s = app.add_subcommand("suite", "Records of a suite scaled to intensity levels, per block size and scenario: "
                                               "IDA, overturning spectra, fragility curves");
     s->fallthrough();
     add_run_options(*s, cmd.run);
-    s->add_option("--suite", cmd.suite, "Suite of records: CSV with name, file, format, units, ... (docs/records.md)")
-        ->required()->check(existing_file("a record suite (CSV)"));
-    s->add_option("--intensity-measure", cmd.measure,
-                  "What the levels measure: pga (PGA [g]), pgv (PGV [m/s]), pga-ratio (PGA / (g tan alpha)), "
-                  "scale (the factor itself)")
-        ->check(one_of({"pga", "pgv", "pga-ratio", "scale"}))->capture_default_str();
-    s->add_option("--intensity-range", cmd.intensity_range, "Levels from LO to HI, in the measure's unit")
-        ->expected(2)->check(number_in(0, 1e3, "", true))->capture_default_str();
-    s->add_option("--intensity-points", cmd.intensity_points, "Levels, evenly spaced, both ends included")
-        ->check(integer_in(1, 100000))->capture_default_str();
+    add_suite_hazard_options(*s, cmd);
+    s->get_option("--suite")->required();
     s->add_option("--radius-range", cmd.radius_range,
                   "Block sizes R from LO to HI [m], at the block's alpha and density (default: the block's own R)")
         ->expected(2)->check(number_in(1e-3, 1e3, "m"));
@@ -58,6 +63,19 @@ void check_suite_options(const CLI::App& app, const std::vector<std::string>& ar
         throw InputError("radius-points", std::to_string(cmd.radius_points), "1 without --radius-range (the block's own R)");
 }
 
+SuiteSpec make_suite_spec(const Options& opts, const SuiteCommand& cmd) {
+    const SweepSpec base = make_sweep_spec(opts);
+    const Axis levels = make_axis("intensity", cmd.intensity_range, cmd.intensity_points);
+    std::vector<double> radii;
+    if (!cmd.radius_range.empty()) radii = make_axis("radius", cmd.radius_range, cmd.radius_points).values();
+    SuiteSpec spec = make_suite_spec(cmd.suite, base.block, base.scenarios,
+                                     parse_intensity_measure("intensity-measure", cmd.measure), levels, radii);
+    spec.equations = base.equations;
+    spec.impact_threshold = base.impact_threshold;
+    spec.friction = base.friction;
+    return spec;
+}
+
 namespace {
 
 struct Plan {
@@ -67,16 +85,7 @@ struct Plan {
 };
 
 Plan make_plan(const Options& opts, const SuiteCommand& cmd) {
-    const SweepSpec base = make_sweep_spec(opts);
-    const Axis levels = make_axis("intensity", cmd.intensity_range, cmd.intensity_points);
-    std::vector<double> radii;
-    if (!cmd.radius_range.empty()) radii = make_axis("radius", cmd.radius_range, cmd.radius_points).values();
-    Plan p{make_suite_spec(cmd.suite, base.block, base.scenarios, parse_intensity_measure("intensity-measure", cmd.measure),
-                           levels, radii),
-           {}, make_settings(opts.numerics)};
-    p.spec.equations = base.equations;
-    p.spec.impact_threshold = base.impact_threshold;
-    p.spec.friction = base.friction;
+    Plan p{make_suite_spec(opts, cmd), {}, make_settings(opts.numerics)};
     for (double x : cmd.damage_states) p.states.push_back({x, false});
     p.states.push_back({0.0, true});
     const double cells = static_cast<double>(p.spec.cell_count());

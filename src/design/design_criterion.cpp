@@ -19,31 +19,48 @@ std::vector<double> node_weights(const Axis& axis) {
     return w;
 }
 
+namespace {
+
+/// Adds cell k of `r`, of weight w, to the running sums.
+struct Tally {
+    const SweepResults& r;
+    const DesignConstraints& c;
+    double total = 0.0, acceptable = 0.0, standing = 0.0;
+
+    void add(std::size_t k, double w) {
+        const bool limited = c.max_rotation_ratio > 0.0 || c.max_force_ratio > 0.0;
+        if (r.done[k] == cell_pending) throw std::invalid_argument("design criterion: cell " + std::to_string(k) + " is not computed");
+        if (limited && r.done[k] == cell_inferred)
+            throw std::invalid_argument("design criterion: a limit needs every cell computed, not inferred by refinement");
+        total += w;
+        if (r.outcome[k] != static_cast<std::uint8_t>(Outcome::safe)) return;
+        standing += w;
+        const bool rotation_ok = !(c.max_rotation_ratio > 0.0) || r.max_rotation[k] <= c.max_rotation_ratio;
+        const bool force_ok = !(c.max_force_ratio > 0.0) || !(r.peak_force_ratio[k] > c.max_force_ratio);
+        if (rotation_ok && force_ok) acceptable += w;
+    }
+    RegionScore score() const { return {acceptable / total, standing / total}; }
+};
+
+}  // namespace
+
 RegionScore score_scenario(const SweepSpec& spec, const SweepResults& r, std::size_t scenario,
                            const DesignConstraints& c) {
     if (scenario >= spec.scenarios.size()) throw std::invalid_argument("score_scenario: no such scenario");
     if (r.size() != spec.cell_count()) throw std::invalid_argument("score_scenario: results do not match the sweep");
-    const bool limited = c.max_rotation_ratio > 0.0 || c.max_force_ratio > 0.0;
     const std::vector<double> wa = node_weights(spec.amplitude_ratio), wo = node_weights(spec.omega_ratio);
     const std::size_t first = scenario * spec.cells_per_scenario();
-    double total = 0.0, acceptable = 0.0, standing = 0.0;
-    for (std::size_t i = 0; i < wa.size(); ++i) {
-        for (std::size_t j = 0; j < wo.size(); ++j) {
-            const std::size_t k = first + i * wo.size() + j;
-            if (r.done[k] == cell_pending)
-                throw std::invalid_argument("score_scenario: cell " + std::to_string(k) + " is not computed");
-            if (limited && r.done[k] == cell_inferred)
-                throw std::invalid_argument("score_scenario: a limit needs every cell computed, not inferred by refinement");
-            const double w = wa[i] * wo[j];
-            total += w;
-            if (r.outcome[k] != static_cast<std::uint8_t>(Outcome::safe)) continue;
-            standing += w;
-            const bool rotation_ok = !(c.max_rotation_ratio > 0.0) || r.max_rotation[k] <= c.max_rotation_ratio;
-            const bool force_ok = !(c.max_force_ratio > 0.0) || !(r.peak_force_ratio[k] > c.max_force_ratio);
-            if (rotation_ok && force_ok) acceptable += w;
-        }
-    }
-    return {acceptable / total, standing / total};
+    Tally t{r, c};
+    for (std::size_t i = 0; i < wa.size(); ++i)
+        for (std::size_t j = 0; j < wo.size(); ++j) t.add(first + i * wo.size() + j, wa[i] * wo[j]);
+    return t.score();
+}
+
+RegionScore score_cells(const SweepResults& r, std::size_t first, std::size_t count, const DesignConstraints& c) {
+    if (count == 0 || first + count > r.size()) throw std::invalid_argument("score_cells: cells out of range");
+    Tally t{r, c};
+    for (std::size_t k = first; k < first + count; ++k) t.add(k, 1.0);
+    return t.score();
 }
 
 }  // namespace rocksweep

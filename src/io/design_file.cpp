@@ -13,7 +13,8 @@ namespace {
 constexpr std::int64_t format_version = 1;
 
 const char* const criterion_words =
-    "area fraction of the hazard region (trapezoid weights over the grid nodes) where the block does not "
+    "fraction of the hazard (a pulse region: its area, trapezoid weights over the grid nodes; a record suite: "
+    "its runs, every record at every level counting once) where the block does not "
     "overturn, its max |theta| / alpha is within max_rotation_ratio and its peak anchorage force within "
     "object_force_N (0: no such limit)";
 
@@ -79,15 +80,28 @@ void write_root(const h5::File& f, const DesignReport& r) {
     h5::write_attribute(f, "object_force_N", r.object_force_n);
     h5::write_attribute(f, "max_force_ratio", r.constraints.max_force_ratio);
     h5::write_attribute(f, "max_rotation_ratio", r.constraints.max_rotation_ratio);
-    h5::write_attribute(f, "hazard", "one-sine pulses over a rectangle of omega_p / p x a_p0 / (alpha g)");
-    const double omega[2] = {r.hazard.omega_ratio.lo, r.hazard.omega_ratio.hi};
-    const double amp[2] = {r.hazard.amplitude_ratio.lo, r.hazard.amplitude_ratio.hi};
-    h5::write_attribute(f, "omega_ratio_range", std::span<const double>(omega));
-    h5::write_attribute(f, "omega_ratio_points", r.hazard.omega_ratio.points);
-    h5::write_attribute(f, "amplitude_ratio_range", std::span<const double>(amp));
-    h5::write_attribute(f, "amplitude_ratio_points", r.hazard.amplitude_ratio.points);
-    h5::write_attribute(f, "phase_rad", r.hazard.phase);
-    h5::write_attribute(f, "vertical_g", r.hazard.vertical_g);
+    if (r.suite) {
+        const SuiteHazard& h = *r.suite;
+        h5::write_attribute(f, "hazard", "the records of a suite, each scaled to every level of " + h.measure +
+                                             " (every run counts equally)");
+        h5::write_attribute(f, "suite_file", h.suite_path);
+        h5::write_attribute(f, "records", h.records);
+        h5::write_attribute(f, "intensity_measure", h.measure);
+        h5::write_attribute(f, "intensity_units", h.units);
+        const double levels[2] = {h.levels.lo, h.levels.hi};
+        h5::write_attribute(f, "intensity_range", std::span<const double>(levels));
+        h5::write_attribute(f, "intensity_points", h.levels.points);
+    } else {
+        h5::write_attribute(f, "hazard", "one-sine pulses over a rectangle of omega_p / p x a_p0 / (alpha g)");
+        const double omega[2] = {r.hazard.omega_ratio.lo, r.hazard.omega_ratio.hi};
+        const double amp[2] = {r.hazard.amplitude_ratio.lo, r.hazard.amplitude_ratio.hi};
+        h5::write_attribute(f, "omega_ratio_range", std::span<const double>(omega));
+        h5::write_attribute(f, "omega_ratio_points", r.hazard.omega_ratio.points);
+        h5::write_attribute(f, "amplitude_ratio_range", std::span<const double>(amp));
+        h5::write_attribute(f, "amplitude_ratio_points", r.hazard.amplitude_ratio.points);
+        h5::write_attribute(f, "phase_rad", r.hazard.phase);
+        h5::write_attribute(f, "vertical_g", r.hazard.vertical_g);
+    }
     h5::write_attribute(f, "refine_stride", r.refine_stride);
     h5::write_attribute(f, "near_optimal", r.near_optimal);
     h5::write_attribute(f, "free_safe_fraction", r.free.acceptable);

@@ -29,3 +29,12 @@ foreach(np 1 2)
 endforeach()
 add_test(NAME design_resume COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/design_resume.sh ${RS} ${DCFG} ${CMAKE_CURRENT_BINARY_DIR}/design_resume)
 set_tests_properties(design_resume PROPERTIES TIMEOUT 180)
+
+# design --suite: the region's options are refused with a suite, the suite's levels without one.
+set(SUITE_CSV ${PROJECT_SOURCE_DIR}/configs/records_suite.csv)
+bad_input(design_levels_without_suite "--intensity-points = 4 is invalid: an option of design --suite"
+          design --config ${DCFG} -o ${OUT} ${TINY} --intensity-points 4)
+bad_input(design_region_with_suite "--omega-ratio-points = 3 is invalid: an option of the pulse region; with --suite the hazard is the suite's records"
+          design --config ${DCFG} -o ${OUT} ${TINY} --suite ${SUITE_CSV})
+bad_input(design_suite_refine "--refine = 8 is invalid: 0 with --suite"
+          design --config ${DCFG} -o ${OUT} --suite ${SUITE_CSV} --refine 8 --quiet)

@@ -7,6 +7,7 @@
 #include "rocksweep/app/cli.hpp"
 #include "rocksweep/parallel/mpi_session.hpp"
 #include "rocksweep/app/options.hpp"
+#include "rocksweep/app/suite_command.hpp"
 
 namespace CLI {
 class App;
@@ -25,17 +26,21 @@ struct DesignCommand {
     double max_rotation_ratio = 0.0;      ///< acceptable: max |theta| / alpha at most this; 0: no limit
     double object_force_ratio = 0.0;      ///< the object's own force limit / (m g); 0: none (F_u only)
     double near_optimal = 0.005;          ///< values within this of the best criterion are reported as near-optimal
+    /// --suite and its levels: the hazard is the records of a suite instead of the pulse region
+    /// (hazard.suite empty: the region). Its run options are not used.
+    SuiteCommand hazard;
 };
 
 /// The design command's own options (the run options are the sweep's, added by cli.cpp).
 void add_design_options(CLI::App& design, DesignCommand& cmd);
 
-/// The sweep's scenario options mean nothing to design, which chooses its scenarios: refused
-/// when typed on the command line (`args`, argv without the program name); a shared config's
-/// keys are let through. Throws InputError.
-void check_design_options(const CLI::App& app, const std::vector<std::string>& args);
+/// The sweep's scenario options mean nothing to design, which chooses its scenarios, nor do
+/// the region's with a suite as the hazard, or the suite's levels without one: refused when
+/// typed on the command line (`args`, argv without the program name); a shared config's keys
+/// are let through. Throws InputError.
+void check_design_options(const CLI::App& app, const std::vector<std::string>& args, const DesignCommand& cmd);
 
-/// Runs the search on every rank of `mpi`: one sweep per round (rank 0 writes OUT.roundN.h5
+/// Runs the search on every rank of `mpi`: one sweep (or suite) per round (rank 0 writes OUT.roundN.h5
 /// beside the output, which --resume continues), then rank 0 writes `cmd.run.output`.
 /// Returns the exit status (cli.hpp).
 int run_design(const Options& opts, const DesignCommand& cmd, const std::string& config_text, const MpiSession& mpi);

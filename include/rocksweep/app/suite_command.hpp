@@ -9,6 +9,7 @@
 
 #include "rocksweep/app/cli.hpp"
 #include "rocksweep/app/options.hpp"
+#include "rocksweep/records/suite_sweep.hpp"
 
 namespace rocksweep {
 
@@ -23,12 +24,20 @@ struct SuiteCommand {
     std::vector<double> damage_states{0.1, 0.3, 0.5};  ///< theta_max / alpha; overturning is always added
 };
 
+/// The options that say which records at which levels (--suite, --intensity-measure,
+/// --intensity-range, --intensity-points): the hazard of `suite`, and of `design --suite`.
+void add_suite_hazard_options(CLI::App& sub, SuiteCommand& cmd);
+
 /// Adds `suite` and its own options to `app`; the model options are the app's (fallthrough).
 CLI::App* add_suite_command(CLI::App& app, SuiteCommand& cmd);
 
 /// Refuses, naming it, an option typed on the command line that the suite would ignore (the
 /// pulse and the spectra grid, refinement).
 void check_suite_options(const CLI::App& app, const std::vector<std::string>& args, const SuiteCommand& cmd);
+
+/// The cells of the suite that `opts` (block, scenarios, numerics) and `cmd` describe: reads
+/// the suite and its records. Throws InputError naming the option.
+SuiteSpec make_suite_spec(const Options& opts, const SuiteCommand& cmd);
 
 /// Runs the suite on every rank of `mpi`; rank 0 writes `cmd.run.output`. Returns the exit status.
 int run_suite(const Options& opts, const SuiteCommand& cmd, const std::string& config_text, const MpiSession& mpi);

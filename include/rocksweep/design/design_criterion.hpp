@@ -1,7 +1,8 @@
 #pragma once
-/// The design criterion: the share of a hazard region (a rectangle of the one-sine pulse plane
-/// ω_p/p × a_p0/(αg)) over which an anchored block is acceptable — it does not overturn and it
-/// meets the conservator's limits on rotation and on the force the anchorage puts on it.
+/// The design criterion: the share of a hazard over which an anchored block is acceptable — it
+/// does not overturn and it meets the conservator's limits on rotation and on the force the
+/// anchorage puts on it. The hazard is a region (a rectangle of the one-sine pulse plane
+/// ω_p/p × a_p0/(αg)) or the runs of a record suite over its intensity levels.
 #include <cstddef>
 #include <vector>
 
@@ -33,5 +34,9 @@ struct RegionScore {
 /// and a cell's outcome was inferred by refinement (it carries no rotation or force).
 RegionScore score_scenario(const SweepSpec& spec, const SweepResults& r, std::size_t scenario,
                            const DesignConstraints& c);
+
+/// The same over cells [first, first + count) of `r`, each of equal weight: the share of the
+/// runs of a record suite (every record at every level counts once) that are acceptable.
+RegionScore score_cells(const SweepResults& r, std::size_t first, std::size_t count, const DesignConstraints& c);
 
 }  // namespace rocksweep

@@ -2,6 +2,7 @@
 /// The design file: the criterion against the constant stiffness K and against K_min/K_max,
 /// the recommended values, the hazard region and the limits used. Layout: docs/design.md.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,15 @@ struct DesignCurve {
     std::size_t near_lo = 0, near_hi = 0;    ///< the run of values around it within DesignReport::near_optimal of its criterion
 };
 
+/// A record suite as the hazard: its runs at each level count equally.
+struct SuiteHazard {
+    std::string suite_path;
+    std::string measure;  ///< "pga_g", ...
+    std::string units;
+    Axis levels;
+    std::size_t records = 0;
+};
+
 struct DesignReport {
     SweepSpec hazard;                  ///< block and region; its scenarios are not written
     DesignConstraints constraints;
@@ -35,6 +45,7 @@ struct DesignReport {
     SearchSettings stiffness_search, kmin_search;  ///< x = log10 K [N/m], log10 (K_min / K_max)
     double near_optimal = 0.0;         ///< margin of the near-optimal ranges
     std::size_t refine_stride = 0;     ///< boundary refinement of each sweep; 0: every cell computed
+    std::optional<SuiteHazard> suite;  ///< set: the hazard is this suite, not hazard's region
 };
 
 /// Writes `path` atomically (publish_h5_atomically). Throws std::invalid_argument if a
