@@ -58,10 +58,9 @@ CLI::App* add_basin_command(CLI::App& app, BasinCommand& cmd) {
 }
 
 void check_basin_options(const CLI::App& app, const std::vector<std::string>& args) {
-    refuse_typed(app, args,
-                 {"--omega-ratio-range", "--omega-ratio-points", "--amplitude-ratio-range", "--amplitude-ratio-points", "--phase",
-                  "--vertical-amplitude", "--vertical-phase", "--friction-coefficient"},
-                 "an option of sweep; basin starts free rocking with the ground at rest");
+    std::vector<std::string> refused = pulse_region_options;
+    refused.push_back("--friction-coefficient");
+    refuse_typed(app, args, refused, "an option of sweep; basin starts free rocking with the ground at rest");
 }
 
 int run_basin(const Options& o, const BasinCommand& cmd, const std::string& config_text) {

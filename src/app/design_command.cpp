@@ -67,8 +67,7 @@ void check_design_options(const CLI::App& app, const std::vector<std::string>& a
         return;
     }
     refuse_typed(app, args,
-                 {"--omega-ratio-range", "--omega-ratio-points", "--amplitude-ratio-range", "--amplitude-ratio-points", "--phase",
-                  "--vertical-amplitude", "--vertical-phase", "--cycles"},
+                 pulse_region_options,
                  "an option of the pulse region; with --suite the hazard is the suite's records");
     if (cmd.run.refine_stride != 0)
         throw InputError("refine", std::to_string(cmd.run.refine_stride), "0 with --suite (refinement is for pulse regions)");

@@ -54,8 +54,7 @@ CLI::App* add_suite_command(CLI::App& app, SuiteCommand& cmd) {
 
 void check_suite_options(const CLI::App& app, const std::vector<std::string>& args, const SuiteCommand& cmd) {
     refuse_typed(app, args,
-                 {"--omega-ratio-range", "--omega-ratio-points", "--amplitude-ratio-range", "--amplitude-ratio-points", "--phase",
-                  "--vertical-amplitude", "--vertical-phase", "--cycles"},
+                 pulse_region_options,
                  "an option of sweep; the suite's ground motions are its records");
     if (cmd.run.refine_stride != 0)
         throw InputError("refine", std::to_string(cmd.run.refine_stride), "0 for suite (refinement is for spectra maps)");

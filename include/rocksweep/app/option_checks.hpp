@@ -29,6 +29,12 @@ CLI::Validator existing_file(const std::string& what);
 void refuse_typed(const CLI::App& app, const std::vector<std::string>& args, const std::vector<std::string>& options,
                   const std::string& why);
 
+/// The options that shape a sweep's pulses and their region: what commands that are not driven
+/// by pulses (basin, suite, design --suite) refuse.
+inline const std::vector<std::string> pulse_region_options{
+    "--omega-ratio-range", "--omega-ratio-points", "--amplitude-ratio-range", "--amplitude-ratio-points", "--phase",
+    "--vertical-amplitude", "--vertical-phase", "--cycles"};
+
 /// 1e+12 -> "1e12", 0.001 -> "0.001", 3.14159265 -> "3.14159": how ranges are written.
 std::string format_bound(double x);
 
