@@ -634,12 +634,6 @@ void run_lanes(std::span<const CellModel> cells, std::span<CellResult> results,
 
 }  // namespace
 
-double rocking_acceleration(const CellModel& m, int side, double kappa, double ax, double ay, double theta) {
-    const kernel::LaneCoef c{m.p2, m.alpha, kappa, static_cast<double>(side), m.equations == Equations::linearised ? 1.0 : 0.0,
-                             kappa == 0.0 ? 0.0 : 1.0};
-    return kernel::rhs(c, Ground{ax, ay}, theta);
-}
-
 void integrate_cells(std::span<const CellModel> cells, std::span<CellResult> results,
                      const IntegratorSettings& settings, int lanes, BatchStats* stats) {
     if (results.size() != cells.size()) throw std::invalid_argument("integrate_cells: size mismatch");
