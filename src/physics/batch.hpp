@@ -1,48 +1,22 @@
 #pragma once
-// The W-lane RK4 step of the kernel: the equation of motion, written once, and one classical
-// RK4 step per lane over a batch of cells. Knows the ground only through the families'
-// lane() functions (excitation/*.hpp); the event logic is the Lane state machine's
-// (integrator.cpp).
+// The W-lane RK4 step of the kernel: one classical RK4 step per lane over a batch of cells, of
+// the equation of motion in system.hpp. Knows the ground only through the families' lane()
+// functions (excitation/*.hpp); where a step ends and what its end means is the event
+// stepper's and the cell's business (event_stepper.hpp, integrator.cpp).
 #include <array>
 #include <cstdlib>
 #include <type_traits>
 
 #include "rocksweep/physics/excitation.hpp"
 #include "rocksweep/physics/fastmath.hpp"
+#include "rocksweep/physics/system.hpp"
 
 namespace rocksweep::kernel {
 
-// ---- The lane arithmetic, branch-free: selects are written as exact arithmetic on 0/1 factors
-// (x * 1 = x, x * 0 + y = y for finite x and y != 0), so that GCC vectorises the lane loop
-// (a ternary between computed values would put the sin/cos under a branch) and a lane gives the
-// same bits whether it runs alone or in a vector. Values that the scalar code set to 0.0 are
-// made exactly +0.0 by adding +0.0. sin/cos: rocksweep::fastmath (odd/even bitwise).
-
-/// Coefficients of the equation of motion in one lane as doubles (side +-1, flags 0/1).
-struct LaneCoef {
-    double p2, alpha, kappa, side, linear, spring;
-};
-
-/// theta'' on side s (physics.md §3, Eq. 7 and 9 with the restoring factor s):
-/// -p^2 [(1 + ay) sin(s alpha - theta) + ax cos(s alpha - theta)] - s kappa sin(s theta / 2).
-/// Written on s theta rather than |theta| so that a trial step just past theta = 0 stays smooth.
-template <bool with_spring = true>
-[[gnu::always_inline]] inline double rhs(const LaneCoef& c, const Ground& g, double theta) {
-    const double s = c.side;
-    const double a = s * c.alpha - theta;
-    const double nl = 1.0 - c.linear;
-    double sa, ca;
-    fastmath::sincos(a, sa, ca);
-    const double sn = a * c.linear + sa * nl;
-    const double cs = c.linear + ca * nl;
-    double spring = 0.0;  // kappa = 0: +0, as the scalar code
-    if constexpr (with_spring) {
-        const double h = 0.5 * s * theta;
-        const double sp = h * c.linear + fastmath::sin(h) * nl;
-        spring = sp * c.spring + 0.0;
-    }
-    return -c.p2 * ((1.0 + g.ay) * sn + g.ax * cs) - s * c.kappa * spring;
-}
+// The lane loop is branch-free so that GCC vectorises it and a lane gives the same bits alone
+// and in a vector: the equation of motion (system.hpp) is written so; sin/cos are
+// rocksweep::fastmath (odd/even bitwise).
+using LaneCoef = rocking::Coef;
 
 /// Per-lane coefficients of one step (as Lane writes them).
 struct RhsLane {
@@ -54,9 +28,7 @@ struct RhsLane {
     GroundLane ground;             ///< its family's lane coefficients
 };
 
-inline LaneCoef coef(const RhsLane& l) {
-    return {l.p2, l.alpha, l.kappa, static_cast<double>(l.side), l.linear ? 1.0 : 0.0, l.kappa == 0.0 ? 0.0 : 1.0};
-}
+inline LaneCoef coef(const RhsLane& l) { return rocking::coef(l.p2, l.alpha, l.kappa, l.side, l.linear); }
 
 /// A batch whose lanes are not all of one vectorised family (records, or a mix): each lane
 /// takes its own family's ground, outside the vector loop, with the same lane() as alone.
@@ -170,13 +142,13 @@ struct Batch {
                 g1 = b.template ground<F, with_y>(i, gl, t + h, b.k.in1[i]);
             }
             // k1 = f(t, y)
-            const double k1y = v, k1v = rhs<spring>(l, g0, y);
+            const double k1y = v, k1v = rocking::theta_ddot<spring>(l, g0, y);
             // k2 = f(t + h/2, y + h/2 k1)
-            const double k2y = v + 0.5 * h * k1v, k2v = rhs<spring>(l, gm, y + 0.5 * h * k1y);
+            const double k2y = v + 0.5 * h * k1v, k2v = rocking::theta_ddot<spring>(l, gm, y + 0.5 * h * k1y);
             // k3 = f(t + h/2, y + h/2 k2)
-            const double k3y = v + 0.5 * h * k2v, k3v = rhs<spring>(l, gm, y + 0.5 * h * k2y);
+            const double k3y = v + 0.5 * h * k2v, k3v = rocking::theta_ddot<spring>(l, gm, y + 0.5 * h * k2y);
             // k4 = f(t + h, y + h k3)
-            const double k4y = v + h * k3v, k4v = rhs<spring>(l, g1, y + h * k3y);
+            const double k4y = v + h * k3v, k4v = rocking::theta_ddot<spring>(l, g1, y + h * k3y);
             b.y1[i] = y + h / 6.0 * (k1y + 2.0 * k2y + 2.0 * k3y + k4y);
             b.v1[i] = v + h / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
             b.a0[i] = k1v;

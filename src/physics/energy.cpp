@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "rocksweep/physics/fastmath.hpp"
+#include "rocksweep/physics/system.hpp"
 
 namespace rocksweep {
 
@@ -11,10 +12,11 @@ namespace {
 
 bool linear(const CellModel& m) { return m.equations == Equations::linearised; }
 
-/// dV/dphi of gravity plus a spring of coefficient kappa.
+/// dV/dphi of gravity plus a spring of coefficient kappa: the restoring acceleration on the
+/// ground at rest, -theta'' at theta = phi > 0. With the C library's sine, as this was defined
+/// (first_maximum's bisection ends on its last bits).
 double potential_slope(const CellModel& m, double kappa, double phi) {
-    if (linear(m)) return m.p2 * (m.alpha - phi) + 0.5 * kappa * phi;
-    return m.p2 * std::sin(m.alpha - phi) + kappa * std::sin(0.5 * phi);
+    return -rocking::theta_ddot<true, rocking::LibmTrig>(rocking::coef(m.p2, m.alpha, kappa, 1, linear(m)), Ground{}, phi);
 }
 
 double potential(const CellModel& m, double kappa, double phi) {
@@ -29,11 +31,12 @@ void potential_and_slope(const CellModel& m, double kappa, double phi, double& v
         dv = potential_slope(m, kappa, phi);
         return;
     }
-    double sa, ca, sq, cq;
+    // Gravity's slope p^2 sin(alpha - phi) is potential_slope's, from the sines V needs anyway.
+    double sa, ca, vs, moment;
     fastmath::sincos(m.alpha - phi, sa, ca);
-    fastmath::sincos(0.25 * phi, sq, cq);
-    v = m.p2 * (ca - m.cos_alpha) + 4.0 * kappa * sq * sq;
-    dv = m.p2 * sa + kappa * 2.0 * sq * cq;
+    rocking::spring_potential_and_moment(kappa, phi, vs, moment);
+    v = m.p2 * (ca - m.cos_alpha) + vs;
+    dv = m.p2 * sa + moment;
 }
 
 }  // namespace
@@ -44,12 +47,7 @@ double gravity_potential(const CellModel& m, double phi) {
 }
 
 double spring_potential(const CellModel& m, double kappa, double phi) {
-    if (kappa == 0.0) return 0.0;
-    if (linear(m)) return 0.25 * kappa * phi * phi;
-    // Integral of the Eq. 8 moment, kappa sin(phi/2): the potential the integrated equation of
-    // motion conserves (the strain energy in tan^2(phi/2) agrees with it to O(phi^4)).
-    const double s = std::sin(0.25 * phi);
-    return 4.0 * kappa * s * s;  // = 2 kappa (1 - cos(phi/2)), without cancellation
+    return rocking::spring_potential(kappa, phi, linear(m));
 }
 
 namespace {
@@ -130,7 +128,7 @@ Works step_works(const CellModel& m, double k_n_m, const StepEnds& step, double 
         const double phi = std::abs(th), sgn = th > 0.0 ? 1.0 : (th < 0.0 ? -1.0 : 0.0);
         const double ax = tn < t_end ? m.pulse.ax(tn) : 0.0;
         w.excitation_j += wt[i] * (-m.mass_kg * ax * m.gravity * m.radius_m * std::cos(m.alpha - phi) * thd);
-        w.anchorage_j += wt[i] * (-8.0 * b * b * k_n_m * std::sin(0.5 * phi) * sgn * thd);
+        w.anchorage_j += wt[i] * (-rocking::anchorage_moment_nm(b, k_n_m, phi) * sgn * thd);
     }
     w.excitation_j *= 0.5 * h;
     w.anchorage_j *= 0.5 * h;
@@ -157,7 +155,7 @@ FreeFate free_fate(const CellModel& m, int side, double v, bool left_intact, boo
         const Swing sw = outward_swing(m, ke, k_out, k_in, brk);
         if (!sw.bounded) return f;
         f.max_phi = std::max(f.max_phi, sw.peak);
-        f.peak_force = std::max(f.peak_force, fcoef * std::tan(0.5 * sw.peak));
+        f.peak_force = std::max(f.peak_force, rocking::spring_force_ratio(fcoef, sw.peak));
         const double v_ret = std::sqrt(2.0 * sw.ke_return);
         ++f.impacts_total;
         if (v_ret < m.v_threshold) {

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "rocksweep/physics/fastmath.hpp"
+#include "rocksweep/physics/system.hpp"
 
 namespace rocksweep {
 
@@ -36,6 +37,11 @@ double CellModel::omega_max() const {
     return w;
 }
 
+double rocking_acceleration(const CellModel& m, int side, double kappa, double ax, double ay, double theta) {
+    return rocking::theta_ddot(rocking::coef(m.p2, m.alpha, kappa, side, m.equations == Equations::linearised),
+                               Ground{ax, ay}, theta);
+}
+
 BaseReactions base_reactions(const CellModel& m, int side, double kappa, double k_n_m, double ax, double ay,
                              double theta, double theta_dot) {
     // Centre of mass about the pivot at x = s b: x = s b - s R sin(alpha - phi),
@@ -45,9 +51,10 @@ BaseReactions base_reactions(const CellModel& m, int side, double kappa, double 
     fastmath::sincos(m.alpha - phi, sa, ca);
     fastmath::sincos(0.5 * phi, sh, ch);
     const bool lin = m.equations == Equations::linearised;
-    // phi'' = s theta'' (the equation of motion on side s, written on phi)
-    const double phidd = -m.p2 * ((1.0 + ay) * (lin ? m.alpha - phi : sa) + s * ax * (lin ? 1.0 : ca)) -
-                         kappa * (lin ? 0.5 * phi : sh);
+    // phi'' = s theta'' is theta'' of the mirror image (physics.md §2): side +1 under the
+    // ground (s ax, ay). The equation of motion, fed the sines the kinematics need anyway.
+    const double phidd = rocking::theta_ddot_from(rocking::coef(m.p2, m.alpha, kappa, 1, lin), Ground{s * ax, ay},
+                                                  lin ? m.alpha - phi : sa, lin ? 1.0 : ca, lin ? 0.5 * phi : sh);
     const double w2 = theta_dot * theta_dot, r_g = m.radius_m / m.gravity;
     BaseReactions f;
     f.fx = ax + s * r_g * (ca * phidd + sa * w2);

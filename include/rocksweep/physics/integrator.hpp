@@ -69,8 +69,4 @@ void integrate_cells(std::span<const CellModel> cells, std::span<CellResult> res
 CellResult integrate_cell(const CellModel& cell, const IntegratorSettings& settings,
                           const StepObserver& observer = {});
 
-/// Right-hand side theta'' for a cell on side s with anchorage coefficient kappa.
-double rocking_acceleration(const CellModel& m, int side, double kappa, double ax, double ay,
-                            double theta);
-
 }  // namespace rocksweep

@@ -45,6 +45,11 @@ struct CellModel {
     double omega_max() const;
 };
 
+/// Right-hand side theta'' [rad/s^2] for a cell on side s (+1: theta > 0) with anchorage
+/// coefficient kappa, ground accelerations ax, ay [g]: the kernel's equation (system.hpp).
+double rocking_acceleration(const CellModel& m, int side, double kappa, double ax, double ay,
+                            double theta);
+
 /// Base reactions at the pivot per unit m g while rocking (physics.md §6): horizontal (friction)
 /// and vertical.
 struct BaseReactions {

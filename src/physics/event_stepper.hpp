@@ -1,0 +1,138 @@
+#pragma once
+// The event stepper: decides where an RK4 step ends. It sees a trial step's end and the event
+// functions the cell hands it; when one has reached zero it locates the earliest root inside
+// the step by re-run RK4 steps from the same start (docs/physics.md, "Numerics"), so that the
+// state at an event carries the RK4 local error only and the global error stays fourth order
+// through impacts. It knows the events by name and their functions' signs, nothing of the
+// physics behind them.
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+
+#include "rocksweep/physics/step.hpp"
+
+namespace rocksweep::kernel {
+
+/// What can end a step. Each has a function of the state that is positive before the event and
+/// <= 0 once it has happened.
+enum class Event { none, overturn, fracture, impact, turn };
+
+/// theta's turning point inside a step, from the cubic Hermite interpolant of (theta,
+/// theta_dot) at the zero of the linear interpolant of theta_dot: error O(dt^4) in the peak.
+inline double hermite_peak(double dt, double y0, double v0, double y1, double v1) {
+    const double tau = v0 / (v0 - v1);
+    double theta, theta_dot;  // theta_dot unused: theta'' at the ends is not needed here
+    StepEnds{0.0, y0, v0, 0.0, dt, y1, v1, 0.0}.at(tau * dt, theta, theta_dot);
+    return theta;
+}
+
+/// The Events a stepper is handed (for one step from a fixed start):
+///   double g(Event e, double d, double y, double v)      e's function at time d into the step;
+///   Event earliest(double d, double y, double v, double& g)  the smallest of the armed ones;
+///   bool grazes(double dt, double y1, double v1)  the step's ends may miss a fracture at an
+///       in-step turning point (the fracture function dips to <= 0 and comes back): the turning
+///       point (Event::turn's root) is located and the fracture function decided there.
+class EventStepper {
+public:
+    /// A search is under way: the cell's next trial step is trial() long, from the same start.
+    bool searching() const { return searching_; }
+    double trial() const { return trial_; }
+
+    /// The end (y1, v1) of a trial step of length dt from (y0, v0) at time t0. Either calls
+    /// accept(dt, y, v, event, interior) with the accepted step's length, the state at its end
+    /// and what happened there, or sets up another trial. interior: the step ends at an in-step
+    /// turning point, not where the cell's trial step was to end (which may be a time boundary:
+    /// the end of the pulse, a zero of the ground, a record's sample).
+    template <class Events, class Accept>
+    void finish(const Events& ev, double t0, double y0, double v0, double dt, double y1, double v1,
+                Accept&& accept) {
+        double g;
+        if (target_ == Event::none) ev.earliest(dt, y1, v1, g);
+        else g = ev.g(target_, dt, y1, v1);
+        if (!searching_) {
+            if (g > 0.0) {
+                if (!ev.grazes(dt, y1, v1)) return accept(dt, y1, v1, Event::none, false);
+                // Locate the turning point (the turn function, positive at the start, <= 0 at
+                // the end) on re-run RK4 steps; its height decides the fracture.
+                peak_check_ = true;
+                start(Event::turn, 0.0, ev.g(Event::turn, 0.0, y0, v0), dt, ev.g(Event::turn, dt, y1, v1), y1, v1);
+                return;
+            }
+            // The earliest event lies in (0, dt]: find it by Illinois (regula falsi that halves
+            // the value of an end kept twice), each trial a fresh RK4 step from the same start.
+            start(Event::none, 0.0, NAN, dt, g, y1, v1);  // the functions may vanish at 0
+            return;
+        }
+        ++iterations_;
+        if (g > 0.0) {
+            if (last_moved_ == 1) g_hi_ *= 0.5;
+            lo_ = dt;
+            g_lo_ = g;
+            last_moved_ = 1;
+        } else {
+            if (last_moved_ == -1) g_lo_ *= 0.5;
+            hi_ = dt;
+            g_hi_ = g;
+            hi_y_ = y1;
+            hi_v_ = v1;
+            last_moved_ = -1;
+        }
+        const double tol = std::max(4.0 * DBL_EPSILON * (std::abs(t0) + hi_), 1e-12 * hi_);
+        if (hi_ - lo_ <= tol || iterations_ >= 100) {
+            searching_ = false;
+            const Event target = target_;
+            target_ = Event::none;  // the next step looks for every event again
+            if (peak_check_) {
+                peak_check_ = false;
+                const double gf = ev.g(Event::fracture, hi_, hi_y_, hi_v_);
+                if (gf <= 0.0) {
+                    // The peak passes the fracture angle: the fracture lies in (0, peak].
+                    start(Event::fracture, 0.0, ev.g(Event::fracture, 0.0, y0, v0), hi_, gf, hi_y_, hi_v_);
+                    return;
+                }
+                // The spring holds: the step ends at the turning point (an ordinary step end).
+                return accept(hi_, hi_y_, hi_v_, Event::none, true);
+            }
+            double gh;
+            const Event which = target == Event::none ? ev.earliest(hi_, hi_y_, hi_v_, gh) : target;
+            return accept(hi_, hi_y_, hi_v_, which, false);
+        }
+        double x = 0.5 * (lo_ + hi_);
+        // Guard: bisect when there is no value at lo yet, or the bracket stopped shrinking.
+        if (!std::isnan(g_lo_) && (iterations_ % 4 != 0 || hi_ - lo_ < 0.5 * width_)) {
+            const double xs = lo_ + (hi_ - lo_) * g_lo_ / (g_lo_ - g_hi_);
+            if (xs > lo_ && xs < hi_) x = xs;
+        }
+        if (iterations_ % 4 == 0) width_ = hi_ - lo_;
+        trial_ = x;
+    }
+
+private:
+    // the root lies in (lo, hi]
+    bool searching_ = false;
+    /// What the search locates: Event::none = the earliest of all events at the step's end;
+    /// Event::turn with peak_check_ = the in-step turning point of a step that grazes.
+    Event target_ = Event::none;
+    bool peak_check_ = false;
+    double lo_ = 0.0, hi_ = 0.0, g_lo_ = 0.0, g_hi_ = 0.0, trial_ = 0.0, width_ = 0.0;
+    int last_moved_ = 0, iterations_ = 0;
+    double hi_y_ = 0.0, hi_v_ = 0.0;
+
+    /// Starts an Illinois search for a root in (lo, hi]; g_lo may be NaN (no value at lo).
+    void start(Event target, double lo, double g_lo, double hi, double g_hi, double y_hi, double v_hi) {
+        searching_ = true;
+        target_ = target;
+        last_moved_ = 0;
+        iterations_ = 0;
+        lo_ = lo;
+        g_lo_ = g_lo;
+        hi_ = hi;
+        g_hi_ = g_hi;
+        hi_y_ = y_hi;
+        hi_v_ = v_hi;
+        width_ = hi - lo;
+        trial_ = 0.5 * (lo + hi);
+    }
+};
+
+}  // namespace rocksweep::kernel

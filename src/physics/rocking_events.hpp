@@ -1,0 +1,65 @@
+#pragma once
+// The event functions of a rocking block (physics.md §3-5), handed to the event stepper for one
+// step: overturning (|theta| = pi/2), fracture of the working spring, impact (theta = 0) and
+// the adaptive law's turning point. Each is positive before its event and <= 0 once it has
+// happened, on the side the step runs on.
+#include <algorithm>
+#include <cmath>
+
+#include "event_stepper.hpp"
+#include "springs.hpp"
+
+namespace rocksweep::kernel {
+
+struct RockingEvents {
+    const Springs& springs;
+    int side;                   ///< the side the step runs on, +-1
+    double theta0, theta_dot0;  ///< the step's start
+    bool acting;                ///< the ground moves at the step's start
+
+    double g(Event e, double d, double y, double v) const {
+        const double s = side;
+        switch (e) {
+            case Event::overturn: return M_PI / 2 - s * y;
+            case Event::fracture: return springs.break_angle() - s * y;
+            case Event::impact:
+                // theta starts at 0 after an impact or uplift: divide out the trivial root.
+                if (theta0 != 0.0) return s * y;
+                return s * theta_dot0 > 0.0 ? s * y / d : s * y / (d * d);
+            case Event::turn: return s * v;
+            case Event::none: break;
+        }
+        return 1.0;
+    }
+
+    Event earliest(double d, double y, double v, double& g_min) const {
+        Event which = Event::none;
+        g_min = INFINITY;
+        auto consider = [&](Event e) {
+            const double ge = g(e, d, y, v);
+            if (ge < g_min) { g_min = ge; which = e; }
+        };
+        consider(Event::overturn);
+        if (springs.intact(side)) consider(Event::fracture);
+        consider(Event::impact);
+        if (springs.turn_armed(side, theta_dot0, acting)) consider(Event::turn);
+        return which;
+    }
+
+    /// |theta| can pass theta_f and come back within one step, unseen at its ends. True if the
+    /// step turns (s theta_dot from > 0 to < 0) and the cubic Hermite peak comes within a
+    /// margin of the fracture angle: the interpolant's O(dt^4) error, covered by a tenth of the
+    /// peak's rise above the ends (O(dt^2)), and the RK4 states' own; the located turning point
+    /// then decides.
+    bool grazes(double dt, double y1, double v1) const {
+        if (!springs.intact(side)) return false;
+        const double s = side, v0 = theta_dot0, y0 = theta0;
+        if (!(s * v0 > 0.0 && s * v1 < 0.0)) return false;
+        const double peak = s * hermite_peak(dt, y0, v0, y1, v1);
+        const double ends = std::max(s * y0, s * y1);
+        const double brk = springs.break_angle();
+        return peak >= brk - (1e-4 * brk + 0.1 * (peak - ends));
+    }
+};
+
+}  // namespace rocksweep::kernel
