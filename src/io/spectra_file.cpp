@@ -13,6 +13,7 @@
 #include "rocksweep/core/errors.hpp"
 #include "rocksweep/io/grid_layout.hpp"
 #include "rocksweep/io/hdf5.hpp"
+#include "spectra_layout.hpp"
 
 namespace rocksweep {
 
@@ -142,14 +143,35 @@ void check_scenario_names(const SweepSpec& spec) {
 // ---------------------------------------------------------------------------------------
 // Writing
 
-// One scenario's block of a column (the columns hold the scenarios one after the other).
+// One scenario's block of a column (the columns hold the scenarios one after the other) as a
+// dataset; without a column, the dataset the streaming writer fills in place (spectra_stream.cpp).
 template <h5::Element T>
-std::span<const T> scenario_block(const std::vector<T>& column, std::size_t scenario, std::size_t cells) {
-    return {column.data() + scenario * cells, cells};
+h5::Dataset write_column(const GridGroup& grid, const char* name, const std::vector<T>* column, std::size_t scenario,
+                         const h5::Group& g, std::span<const GridAxis> axes) {
+    const std::size_t cells = grid.cell_count();
+    if (column) return grid.write<T>(name, std::span<const T>(column->data() + scenario * cells, cells));
+    const std::vector<hsize_t> dims = grid_dims(axes);
+    h5::Dataset ds = h5::create_fixed_dataset<T>(g, name, dims);
+    std::string names;
+    for (unsigned d = 0; d < axes.size(); ++d) {
+        h5::attach_scale(ds, g.open_dataset(axes[d].name), d);
+        names += (names.empty() ? "" : ", ") + axes[d].name;
+    }
+    h5::write_attribute(ds, "dimensions", names);
+    return ds;
 }
 
+// Where the columns come from: a SweepResults, or nothing (fixed datasets to fill in place).
+struct Columns {
+    const SweepResults* r;
+    const h5::Group& g;
+    std::span<const GridAxis> axes;
+    template <class T>
+    const std::vector<T>* operator()(std::vector<T> SweepResults::*m) const { return r ? &(r->*m) : nullptr; }
+};
+
 void write_root(const h5::File& f, const SweepSpec& spec, const IntegratorSettings& settings,
-                const SweepResults& r) {
+                const SweepResults* r) {
     h5::write_attribute(f, "title", "rocksweep overturning spectra");
     h5::write_attribute(f, "format_version", format_version);
     for (const NamedNumber& n : root_numbers(spec)) h5::write_attribute(f, n.name, n.value);
@@ -160,8 +182,9 @@ void write_root(const h5::File& f, const SweepSpec& spec, const IntegratorSettin
         else h5::write_attribute(f, x.attribute, x.number);
     }
     h5::write_attribute(f, "friction_coefficient", spec.friction);  // 0: not checked
-    const auto n_done = static_cast<std::int64_t>(
-        std::count_if(r.done.begin(), r.done.end(), [](std::uint8_t d) { return d != 0; }));
+    const auto n_done = r ? static_cast<std::int64_t>(std::count_if(r->done.begin(), r->done.end(),
+                                                                    [](std::uint8_t d) { return d != 0; }))
+                          : std::int64_t{0};
     const auto n_cells = static_cast<std::int64_t>(spec.cell_count());
     h5::write_attribute(f, "n_cells", n_cells);
     h5::write_attribute(f, "n_done", n_done);
@@ -170,9 +193,9 @@ void write_root(const h5::File& f, const SweepSpec& spec, const IntegratorSettin
 
 /// A measured quantity: the grid with its units, long_name and, where there is one, comment.
 template <h5::Element T>
-void write_measure(const GridGroup& grid, const char* name, const std::vector<T>& column, std::size_t index,
-                   const char* units, const char* long_name, const char* comment = nullptr) {
-    const h5::Dataset ds = grid.write<T>(name, scenario_block(column, index, grid.cell_count()));
+void write_measure(const GridGroup& grid, const char* name, const std::vector<T>* column, std::size_t index,
+                   const Columns& from, const char* units, const char* long_name, const char* comment = nullptr) {
+    const h5::Dataset ds = write_column(grid, name, column, index, from.g, from.axes);
     h5::write_attribute(ds, "units", units);
     h5::write_attribute(ds, "long_name", long_name);
     if (comment) h5::write_attribute(ds, "comment", comment);
@@ -180,10 +203,10 @@ void write_measure(const GridGroup& grid, const char* name, const std::vector<T>
 
 /// A code: the grid with its long_name and the CF flag attributes (flag_values or flag_masks,
 /// flag_meanings), and a comment where there is one.
-void write_code(const GridGroup& grid, const char* name, const std::vector<std::uint8_t>& column,
-                std::size_t index, const char* long_name, const char* flag_kind,
+void write_code(const GridGroup& grid, const char* name, const std::vector<std::uint8_t>* column,
+                std::size_t index, const Columns& from, const char* long_name, const char* flag_kind,
                 std::span<const std::uint8_t> flags, const char* meanings, const char* comment = nullptr) {
-    const h5::Dataset ds = grid.write<std::uint8_t>(name, scenario_block(column, index, grid.cell_count()));
+    const h5::Dataset ds = write_column(grid, name, column, index, from.g, from.axes);
     h5::write_attribute(ds, "long_name", long_name);
     h5::write_attribute(ds, flag_kind, flags);
     h5::write_attribute(ds, "flag_meanings", meanings);
@@ -191,44 +214,45 @@ void write_code(const GridGroup& grid, const char* name, const std::vector<std::
 }
 
 void write_scenario(const h5::Group& spectra, std::size_t index, const SweepSpec& spec,
-                    const SweepResults& r, std::span<const GridAxis> axes) {
+                    const SweepResults* r, std::span<const GridAxis> axes) {
     const Scenario& s = spec.scenarios[index];
     const h5::Group g = spectra.create_group(s.name);
     h5::write_attribute(g, "index", index);  // position in the config: group listings sort by name
     for (const NamedText& t : scenario_texts(s)) h5::write_attribute(g, t.name, t.value);
     for (const NamedNumber& n : scenario_numbers(s)) h5::write_attribute(g, n.name, n.value);
     const GridGroup grid(g, axes);
+    const Columns c{r, g, axes};
 
     const std::uint8_t outcomes[] = {0, 1, 2, 255};
-    write_code(grid, "outcome", r.outcome, index, "outcome of the pulse", "flag_values", outcomes,
+    write_code(grid, "outcome", c(&SweepResults::outcome), index, c, "outcome of the pulse", "flag_values", outcomes,
                "safe overturned_with_impact overturned_without_impact not_converged");
-    write_measure(grid, "max_rotation", r.max_rotation, index, "1", "max |theta| / alpha");
-    write_measure(grid, "impacts", r.impacts, index, "1", "impacts with approach speed above the threshold");
-    write_measure(grid, "impacts_total", r.impacts_total, index, "1",
+    write_measure(grid, "max_rotation", c(&SweepResults::max_rotation), index, c, "1", "max |theta| / alpha");
+    write_measure(grid, "impacts", c(&SweepResults::impacts), index, c, "1", "impacts with approach speed above the threshold");
+    write_measure(grid, "impacts_total", c(&SweepResults::impacts_total), index, c, "1",
                   "impacts, the settling one included",
                   "the first impact slower than impact_threshold p alpha puts the block at rest "
                   "(the rest would pile up in finite time); it counts here, not in impacts");
-    write_measure(grid, "t_overturn", r.t_overturn, index, "s",
+    write_measure(grid, "t_overturn", c(&SweepResults::t_overturn), index, c, "s",
                   "time at which |theta| reached pi/2",
                   "NaN when the block did not overturn");
-    write_measure(grid, "peak_force_ratio", r.peak_force_ratio, index, "1",
+    write_measure(grid, "peak_force_ratio", c(&SweepResults::peak_force_ratio), index, c, "1",
                   "peak anchorage force / F_u",
                   "NaN for a free-standing block");
     const std::uint8_t masks[] = {broken_left, broken_right};
-    write_code(grid, "broken", r.broken, index, "restrainers broken during the run", "flag_masks", masks,
+    write_code(grid, "broken", c(&SweepResults::broken), index, c, "restrainers broken during the run", "flag_masks", masks,
                "left_spring_broken right_spring_broken",
                "bit 1: left spring (works for theta > 0); bit 2: right spring (works for theta < 0)");
-    write_measure(grid, "mu_required", r.mu_required, index, "1",
+    write_measure(grid, "mu_required", c(&SweepResults::mu_required), index, c, "1",
                   "friction coefficient needed to rock without sliding, max |f_x / f_y|",
                   "base reactions from the motion of the centre of mass (Eq. 16-18); where it exceeds the "
                   "interface's static friction coefficient the block would slide and this cell's "
                   "pure-rocking result does not hold");
     const std::uint8_t uplift[] = {0, 1};
-    write_code(grid, "pivot_uplift", r.pivot_uplift, index, "vertical reaction at the pivot went negative",
+    write_code(grid, "pivot_uplift", c(&SweepResults::pivot_uplift), index, c, "vertical reaction at the pivot went negative",
                "flag_values", uplift, "pivot_stays_down pivot_lifts",
                "1: the block would jump; the rocking model does not hold there");
     const std::uint8_t done[] = {0, 1, 2};
-    write_code(grid, "done", r.done, index, "cell computed", "flag_values", done, "pending computed inferred",
+    write_code(grid, "done", c(&SweepResults::done), index, c, "cell computed", "flag_values", done, "pending computed inferred",
                "the other datasets are meaningful only where done = 1; done = 2: outcome inferred by "
                "boundary refinement from a uniform square of computed cells (other datasets NaN/0)");
 }
@@ -243,11 +267,17 @@ void write_provenance(const h5::File& f, const Provenance& prov, const Integrato
     h5::write_attribute(g, "created_utc", prov.created_utc);
     h5::write_attribute(g, "ranks", prov.ranks);
     h5::write_attribute(g, "wall_s", prov.wall_s);
+    // What saving cost the run (the streaming writer fills them in; see docs/hdf5.md).
+    h5::write_attribute(g, "checkpoint_s", 0.0);
+    h5::write_attribute(g, "checkpoints", std::int64_t{0});
 }
 
+}  // namespace
+
 // All objects opened here are closed on return, so the caller can close the file.
-void write_contents(const h5::File& f, const SweepSpec& spec, const SweepResults& r,
-                    const Provenance& prov, const IntegratorSettings& settings) {
+void spectra_detail::write_contents(const h5::File& f, const SweepSpec& spec, const SweepResults* r,
+                                    const Provenance& prov, const IntegratorSettings& settings) {
+    check_scenario_names(spec);
     // The numerics that shape the results are part of the result (root); they stay in
     // /provenance too.
     write_root(f, spec, settings, r);
@@ -257,6 +287,8 @@ void write_contents(const h5::File& f, const SweepSpec& spec, const SweepResults
     for (std::size_t i = 0; i < spec.scenarios.size(); ++i) write_scenario(spectra, i, spec, r, axes);
     write_provenance(f, prov, settings);
 }
+
+namespace {
 
 // ---------------------------------------------------------------------------------------
 // Reading
@@ -297,20 +329,26 @@ void compare_setting(const std::string& path, const h5::File& f, const Setting& 
                                "that shaped its results)");
 }
 
+// Checks the shape of a result dataset and, given a column, reads it into its scenario's block.
 template <h5::Element T>
-void read_grid(const std::string& path, const h5::Group& g, const char* name, std::vector<T>& column,
+void read_grid(const std::string& path, const h5::Group& g, const char* name, std::vector<T>* column,
                std::size_t scenario, std::span<const GridAxis> axes) {
     const std::vector<hsize_t> expected = grid_dims(axes);
+    if (!column) {
+        if (const std::vector<hsize_t> dims = g.open_dataset(name).dims(); dims != expected)
+            mismatch(path, g.name() + "/" + name + " is " + dims_text(dims) + ", the config needs " + dims_text(expected));
+        return;
+    }
     const h5::ArrayN<T> a = h5::read_array<T>(g, name);
     if (a.dims != expected)
         mismatch(path, g.name() + "/" + name + " is " + dims_text(a.dims) + ", the config needs " +
                            dims_text(expected));
     std::copy(a.values.begin(), a.values.end(),
-              column.begin() + static_cast<std::ptrdiff_t>(scenario * a.values.size()));
+              column->begin() + static_cast<std::ptrdiff_t>(scenario * a.values.size()));
 }
 
-SweepResults read_contents(const std::string& path, const h5::File& f, const SweepSpec& spec,
-                           const IntegratorSettings& settings) {
+void read_contents(const std::string& path, const h5::File& f, const SweepSpec& spec,
+                   const IntegratorSettings& settings, SweepResults* r) {
     for (const NamedNumber& n : root_numbers(spec)) compare_number(path, f, n);
     for (const Setting& x : result_settings(spec, settings)) compare_setting(path, f, x);
 
@@ -329,26 +367,25 @@ SweepResults read_contents(const std::string& path, const h5::File& f, const Swe
     }
 
     const std::vector<GridAxis> axes = grid_axes(spec);
-    SweepResults r;
-    r.resize(spec.cell_count());
+    if (r) r->resize(spec.cell_count());
+    auto col = [r](auto SweepResults::*m) { return r ? &(r->*m) : nullptr; };
     for (std::size_t i = 0; i < spec.scenarios.size(); ++i) {
         const Scenario& s = spec.scenarios[i];
         const h5::Group g = spectra.open_group(s.name);
         for (const NamedText& t : scenario_texts(s)) compare_text(path, g, t.name, t.value);
         for (const NamedNumber& n : scenario_numbers(s)) compare_number(path, g, n);
         if (const std::string diff = axes_difference(g, axes); !diff.empty()) mismatch(path, g.name() + ": " + diff);
-        read_grid(path, g, "outcome", r.outcome, i, axes);
-        read_grid(path, g, "max_rotation", r.max_rotation, i, axes);
-        read_grid(path, g, "impacts", r.impacts, i, axes);
-        read_grid(path, g, "t_overturn", r.t_overturn, i, axes);
-        read_grid(path, g, "peak_force_ratio", r.peak_force_ratio, i, axes);
-        read_grid(path, g, "broken", r.broken, i, axes);
-        read_grid(path, g, "impacts_total", r.impacts_total, i, axes);
-        read_grid(path, g, "mu_required", r.mu_required, i, axes);
-        read_grid(path, g, "pivot_uplift", r.pivot_uplift, i, axes);
-        read_grid(path, g, "done", r.done, i, axes);
+        read_grid(path, g, "outcome", col(&SweepResults::outcome), i, axes);
+        read_grid(path, g, "max_rotation", col(&SweepResults::max_rotation), i, axes);
+        read_grid(path, g, "impacts", col(&SweepResults::impacts), i, axes);
+        read_grid(path, g, "t_overturn", col(&SweepResults::t_overturn), i, axes);
+        read_grid(path, g, "peak_force_ratio", col(&SweepResults::peak_force_ratio), i, axes);
+        read_grid(path, g, "broken", col(&SweepResults::broken), i, axes);
+        read_grid(path, g, "impacts_total", col(&SweepResults::impacts_total), i, axes);
+        read_grid(path, g, "mu_required", col(&SweepResults::mu_required), i, axes);
+        read_grid(path, g, "pivot_uplift", col(&SweepResults::pivot_uplift), i, axes);
+        read_grid(path, g, "done", col(&SweepResults::done), i, axes);
     }
-    return r;
 }
 
 }  // namespace
@@ -356,17 +393,23 @@ SweepResults read_contents(const std::string& path, const h5::File& f, const Swe
 void write_spectra(const std::string& path, const SweepSpec& spec, const SweepResults& r,
                    const Provenance& prov, const IntegratorSettings& settings) {
     check_columns(spec, r);
-    check_scenario_names(spec);
-    h5::publish_h5_atomically(path, [&](const h5::File& f) { write_contents(f, spec, r, prov, settings); });
+    h5::publish_h5_atomically(path, [&](const h5::File& f) { spectra_detail::write_contents(f, spec, &r, prov, settings); });
 }
 
 SweepResults read_spectra_results(const std::string& path, const SweepSpec& spec,
                                   const IntegratorSettings& settings) {
+    SweepResults r;
+    spectra_detail::open_checked(path, spec, settings, &r);
+    return r;
+}
+
+h5::File spectra_detail::open_checked(const std::string& path, const SweepSpec& spec,
+                                      const IntegratorSettings& settings, SweepResults* r) {
     // What the file is, in the user's words, before any HDF5 detail.
     auto not_spectra = [&](const std::string& what) {
         return InputError("output", path, "a rocksweep spectra file to resume; it is " + what);
     };
-    std::optional<h5::File> opened;
+    std::optional<h5::File> opened;  // the file, or a message about what it is
     try {
         opened.emplace(h5::File::open_read_only(path));
     } catch (const Hdf5Error&) {
@@ -383,7 +426,8 @@ SweepResults read_spectra_results(const std::string& path, const SweepSpec& spec
                              (v < format_version ? " (an older layout, axes in /axes)" : " (a newer rocksweep's)") +
                              ", which this rocksweep does not continue: sweep again with --overwrite");
     try {
-        return read_contents(path, f, spec, settings);
+        read_contents(path, f, spec, settings, r);
+        return std::move(*opened);
     } catch (const Hdf5Error& e) {
         // A missing attribute or dataset means this is not a file we wrote for this layout.
         throw InputError("spectra file", path,

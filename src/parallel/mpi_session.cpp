@@ -39,6 +39,12 @@ MpiSession::~MpiSession() {
     if (!finalized) MPI_Finalize();
 }
 
+void MpiSession::broadcast(int& value) const {
+    if (size_ > 1) MPI_Bcast(&value, 1, MPI_INT, 0, comm());
+}
+
+double MpiSession::wall_time() noexcept { return MPI_Wtime(); }
+
 void MpiSession::abort(int code) const noexcept {
     std::fflush(stdout);
     std::fflush(stderr);
