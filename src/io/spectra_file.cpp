@@ -1,8 +1,8 @@
+// Writing a spectra file: the layout of docs/hdf5.md, whole (write_spectra) or as the skeleton
+// the streaming writer fills in place (spectra_stream.cpp).
 #include "rocksweep/io/spectra_file.hpp"
 
 #include <algorithm>
-#include <optional>
-#include <cmath>
 #include <cstdint>
 #include <set>
 #include <span>
@@ -17,96 +17,9 @@
 
 namespace rocksweep {
 
+using namespace spectra_detail;
+
 namespace {
-
-// Bumped when the layout changes in a way a reader must know about. 2: the axes moved from
-// /axes into every scenario group, where netCDF-4 readers look for dimensions.
-constexpr std::int64_t format_version = 2;
-
-// The axes of every scenario's grid, slowest first: they alone shape the layout.
-std::vector<GridAxis> grid_axes(const SweepSpec& spec) {
-    return {
-        {"amplitude_ratio", "1", "a_p0 / (alpha g)", spec.amplitude_ratio.values()},
-        {"omega_ratio", "1", "omega_p / p", spec.omega_ratio.values()},
-    };
-}
-
-// Attributes that define the cells: written by write_spectra and compared by
-// read_spectra_results, so the two can never disagree about what "the same sweep" means.
-struct NamedNumber {
-    const char* name;
-    double value;
-};
-
-std::vector<NamedNumber> root_numbers(const SweepSpec& spec) {
-    const Block& b = spec.block;
-    return {
-        {"half_width_m", b.half_width_m()},
-        {"half_height_m", b.half_height_m()},
-        {"radius_m", b.radius_m},
-        {"alpha_rad", b.alpha_rad},
-        {"p_rad_s", b.p()},
-        {"e", b.e},
-        {"inertia_ratio", b.inertia_ratio},
-        {"mass_kg", b.mass_kg},
-        {"gravity_m_s2", b.gravity},
-        {"phase_rad", spec.phase},
-        {"vertical_g", spec.vertical_g},
-        {"vertical_phase_rad", spec.vertical_phase},
-    };
-}
-
-std::vector<NamedNumber> scenario_numbers(const Scenario& s) {
-    const Anchorage& a = s.anchorage;
-    return {
-        {"theta_f_ratio", s.theta_f_ratio}, {"kmin_ratio", s.kmin_ratio},
-        {"k_max_N_per_m", a.k_max},         {"k_min_N_per_m", a.k_min},
-        {"strength_N", a.strength_n},       {"theta_f_rad", a.theta_f_rad},
-    };
-}
-
-struct NamedText {
-    const char* name;
-    std::string value;
-};
-
-std::vector<NamedText> scenario_texts(const Scenario& s) {
-    return {{"anchorage", to_string(s.anchorage.kind)},
-            {"break_rule", to_string(s.anchorage.break_rule)},
-            {"adaptive_law", to_string(s.anchorage.law)}};
-}
-
-bool same_number(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
-
-// The settings that shape results without defining the cells: a resume must use the same
-// ones, and an error names the option that differs.
-struct Setting {
-    const char* attribute;
-    const char* option;        // as the user writes it, without "--"
-    std::string text;          // what the user gave, for messages and string attributes
-    double number = 0.0;       // for numeric attributes
-    bool is_text = false;
-};
-
-std::vector<Setting> result_settings(const SweepSpec& spec, const IntegratorSettings& s) {
-    auto num = [](const char* attr, const char* option, double x, std::string shown) {
-        return Setting{attr, option, std::move(shown), x, false};
-    };
-    // The method is compared first; of the two step settings only the method's own shapes results.
-    const bool paper = s.method == Method::paper;
-    return {
-        {"method", "method", to_string(s.method), 0.0, true},
-        paper ? num("paper_dt_s", "paper-dt", s.paper_dt_s, format_number(s.paper_dt_s))
-              : num("steps_per_period", "steps-per-period", s.steps_per_period, format_number(s.steps_per_period)),
-        num("max_steps", "max-steps", static_cast<double>(s.max_steps), std::to_string(s.max_steps)),
-        // 1: a safe block is decided by energy after the pulse; 0: --no-energy-stop.
-        num("energy_stop", "no-energy-stop", s.energy_stop ? 1.0 : 0.0, s.energy_stop ? "not given" : "given"),
-        num("impact_threshold", "impact-threshold", spec.impact_threshold, format_number(spec.impact_threshold)),
-        {"equations", "equations", to_string(spec.equations), 0.0, true},
-        {"pulse", "pulse", to_string(spec.pulse_family), 0.0, true},
-        num("pulse_cycles", "cycles", spec.pulse_cycles, std::to_string(spec.pulse_cycles)),
-    };
-}
 
 void check_columns(const SweepSpec& spec, const SweepResults& r) {
     const std::size_t n = spec.cell_count();
@@ -288,151 +201,10 @@ void spectra_detail::write_contents(const h5::File& f, const SweepSpec& spec, co
     write_provenance(f, prov, settings);
 }
 
-namespace {
-
-// ---------------------------------------------------------------------------------------
-// Reading
-
-[[noreturn]] void mismatch(const std::string& path, const std::string& what) {
-    throw InputError("spectra file", path, "a file written for the same sweep (" + what + ")");
-}
-
-void compare_number(const std::string& path, const h5::Object& obj, const NamedNumber& n) {
-    const double in_file = h5::read_double_attribute(obj, n.name);
-    if (!same_number(in_file, n.value))
-        mismatch(path, obj.name() + " attribute " + n.name + " is " + format_number(in_file) +
-                           " in the file, " + format_number(n.value) + " in the config");
-}
-
-void compare_text(const std::string& path, const h5::Object& obj, const char* name,
-                  const std::string& expected) {
-    // A file from before --adaptive-law has no adaptive_law: it was computed with the paper's law.
-    const bool before_law = std::string_view(name) == "adaptive_law" && !obj.has_attribute(name);
-    const std::string in_file = before_law ? "paper" : h5::read_string_attribute(obj, name);
-    if (in_file != expected)
-        mismatch(path, obj.name() + " attribute " + name + " is '" + in_file + "' in the file, '" +
-                           expected + "' in the config");
-}
-
-void compare_setting(const std::string& path, const h5::File& f, const Setting& x) {
-    std::string in_file;
-    if (x.is_text) {
-        in_file = h5::read_string_attribute(f, x.attribute);
-        if (in_file == x.text) return;
-    } else {
-        const double value = h5::read_double_attribute(f, x.attribute);
-        if (value == x.number) return;
-        in_file = std::string(x.option) == "no-energy-stop" ? (value != 0.0 ? "not given" : "given") : format_number(value);
-    }
-    throw InputError(x.option, x.text,
-                     in_file + ", as " + path + " was computed with (--resume continues a file only with the settings "
-                               "that shaped its results)");
-}
-
-// Checks the shape of a result dataset and, given a column, reads it into its scenario's block.
-template <h5::Element T>
-void read_grid(const std::string& path, const h5::Group& g, const char* name, std::vector<T>* column,
-               std::size_t scenario, std::span<const GridAxis> axes) {
-    const std::vector<hsize_t> expected = grid_dims(axes);
-    if (!column) {
-        if (const std::vector<hsize_t> dims = g.open_dataset(name).dims(); dims != expected)
-            mismatch(path, g.name() + "/" + name + " is " + dims_text(dims) + ", the config needs " + dims_text(expected));
-        return;
-    }
-    const h5::ArrayN<T> a = h5::read_array<T>(g, name);
-    if (a.dims != expected)
-        mismatch(path, g.name() + "/" + name + " is " + dims_text(a.dims) + ", the config needs " +
-                           dims_text(expected));
-    std::copy(a.values.begin(), a.values.end(),
-              column->begin() + static_cast<std::ptrdiff_t>(scenario * a.values.size()));
-}
-
-void read_contents(const std::string& path, const h5::File& f, const SweepSpec& spec,
-                   const IntegratorSettings& settings, SweepResults* r) {
-    for (const NamedNumber& n : root_numbers(spec)) compare_number(path, f, n);
-    for (const Setting& x : result_settings(spec, settings)) compare_setting(path, f, x);
-
-    const h5::Group spectra = f.open_group("spectra");
-    std::vector<std::string> in_file = spectra.children();
-    std::vector<std::string> expected;
-    for (const Scenario& s : spec.scenarios) expected.push_back(s.name);
-    std::sort(expected.begin(), expected.end());
-    if (in_file != expected) {
-        auto join = [](const std::vector<std::string>& v) {
-            std::string s;
-            for (const auto& x : v) s += (s.empty() ? "" : ", ") + x;
-            return s.empty() ? std::string("none") : s;
-        };
-        mismatch(path, "scenarios in the file: " + join(in_file) + "; in the config: " + join(expected));
-    }
-
-    const std::vector<GridAxis> axes = grid_axes(spec);
-    if (r) r->resize(spec.cell_count());
-    auto col = [r](auto SweepResults::*m) { return r ? &(r->*m) : nullptr; };
-    for (std::size_t i = 0; i < spec.scenarios.size(); ++i) {
-        const Scenario& s = spec.scenarios[i];
-        const h5::Group g = spectra.open_group(s.name);
-        for (const NamedText& t : scenario_texts(s)) compare_text(path, g, t.name, t.value);
-        for (const NamedNumber& n : scenario_numbers(s)) compare_number(path, g, n);
-        if (const std::string diff = axes_difference(g, axes); !diff.empty()) mismatch(path, g.name() + ": " + diff);
-        read_grid(path, g, "outcome", col(&SweepResults::outcome), i, axes);
-        read_grid(path, g, "max_rotation", col(&SweepResults::max_rotation), i, axes);
-        read_grid(path, g, "impacts", col(&SweepResults::impacts), i, axes);
-        read_grid(path, g, "t_overturn", col(&SweepResults::t_overturn), i, axes);
-        read_grid(path, g, "peak_force_ratio", col(&SweepResults::peak_force_ratio), i, axes);
-        read_grid(path, g, "broken", col(&SweepResults::broken), i, axes);
-        read_grid(path, g, "impacts_total", col(&SweepResults::impacts_total), i, axes);
-        read_grid(path, g, "mu_required", col(&SweepResults::mu_required), i, axes);
-        read_grid(path, g, "pivot_uplift", col(&SweepResults::pivot_uplift), i, axes);
-        read_grid(path, g, "done", col(&SweepResults::done), i, axes);
-    }
-}
-
-}  // namespace
-
 void write_spectra(const std::string& path, const SweepSpec& spec, const SweepResults& r,
                    const Provenance& prov, const IntegratorSettings& settings) {
     check_columns(spec, r);
     h5::publish_h5_atomically(path, [&](const h5::File& f) { spectra_detail::write_contents(f, spec, &r, prov, settings); });
-}
-
-SweepResults read_spectra_results(const std::string& path, const SweepSpec& spec,
-                                  const IntegratorSettings& settings) {
-    SweepResults r;
-    spectra_detail::open_checked(path, spec, settings, &r);
-    return r;
-}
-
-h5::File spectra_detail::open_checked(const std::string& path, const SweepSpec& spec,
-                                      const IntegratorSettings& settings, SweepResults* r) {
-    // What the file is, in the user's words, before any HDF5 detail.
-    auto not_spectra = [&](const std::string& what) {
-        return InputError("output", path, "a rocksweep spectra file to resume; it is " + what);
-    };
-    std::optional<h5::File> opened;  // the file, or a message about what it is
-    try {
-        opened.emplace(h5::File::open_read_only(path));
-    } catch (const Hdf5Error&) {
-        throw not_spectra("not an HDF5 file");
-    }
-    const h5::File& f = *opened;
-    if (f.exists("theta") && f.exists("t")) throw not_spectra("a history written by rocksweep simulate");
-    if (!f.has_attribute("format_version") || !f.exists("spectra"))
-        throw not_spectra("an HDF5 file that rocksweep sweep did not write");
-    if (const std::int64_t v = h5::read_int64_attribute(f, "format_version"); v != format_version)
-        throw InputError("output", path,
-                         "a spectra file of format version " + std::to_string(format_version) +
-                             " to resume; it is of version " + std::to_string(v) +
-                             (v < format_version ? " (an older layout, axes in /axes)" : " (a newer rocksweep's)") +
-                             ", which this rocksweep does not continue: sweep again with --overwrite");
-    try {
-        read_contents(path, f, spec, settings, r);
-        return std::move(*opened);
-    } catch (const Hdf5Error& e) {
-        // A missing attribute or dataset means this is not a file we wrote for this layout.
-        throw InputError("spectra file", path,
-                         std::string("a rocksweep spectra file (") + e.what() + ")");
-    }
 }
 
 }  // namespace rocksweep
