@@ -210,15 +210,28 @@ ScheduleStats SweepRun::run_pass(const std::vector<IndexRange>& todo) {
     return stats;
 }
 
+/// The cells the passes before `k` compute in a run that is never interrupted, replayed from
+/// the outcomes: a pass must choose from these alone, not from what a killed run had computed
+/// beyond them (a corner known early would make a square mixed sooner, and the resumed sweep
+/// would compute cells the uninterrupted one infers).
+std::vector<std::uint8_t> known_before(const Refinement& refine, int k, const std::vector<std::uint8_t>& outcome) {
+    std::vector<std::uint8_t> known(outcome.size(), cell_pending);
+    for (int j = 0; j < k; ++j)
+        for (std::size_t i : refine.cells_for_pass(j, outcome.data(), known.data())) known[i] = cell_computed;
+    return known;
+}
+
 std::vector<IndexRange> SweepRun::refinement_pass(const Refinement& refine, int k) {
-    // What earlier passes found is read back from the file: 2 bytes per cell of one scenario.
+    // What earlier passes found is read back from the file: 3 bytes per cell of one scenario.
     save();
     const std::size_t per = spec_.cells_per_scenario();
     std::vector<std::uint8_t> outcome(per), done(per);
     std::vector<IndexRange> todo;
     for (std::size_t s = 0; s < spec_.scenarios.size() && save_error_.empty(); ++s) {
         stream_->read_outcomes(s, outcome.data(), done.data());
-        for (std::size_t i : refine.cells_for_pass(k, outcome.data(), done.data())) {
+        const std::vector<std::uint8_t> known = known_before(refine, k, outcome);
+        for (std::size_t i : refine.cells_for_pass(k, outcome.data(), known.data())) {
+            if (done[i] == cell_computed) continue;  // computed before a kill
             if (!todo.empty() && todo.back().first + todo.back().count == s * per + i) ++todo.back().count;
             else todo.push_back({s * per + i, 1});
         }
@@ -230,13 +243,13 @@ std::vector<IndexRange> SweepRun::refinement_pass(const Refinement& refine, int 
 void SweepRun::infer_the_rest(const Refinement& refine) {
     save();
     const std::size_t per = spec_.cells_per_scenario();
-    std::vector<std::uint8_t> outcome(per), done(per), before(per);
+    std::vector<std::uint8_t> outcome(per), done(per);
     for (std::size_t s = 0; s < spec_.scenarios.size() && save_error_.empty(); ++s) {
         try {
             stream_->read_outcomes(s, outcome.data(), done.data());
-            before = done;
-            refine.fill(outcome.data(), done.data());
-            stream_->add_inferred(s, outcome.data(), before.data(), done.data());
+            std::vector<std::uint8_t> known = known_before(refine, refine.passes(), outcome);
+            refine.fill(outcome.data(), known.data());
+            stream_->add_inferred(s, outcome.data(), done.data(), known.data());
         } catch (const std::exception& e) {
             save_error_ = e.what();
         }
