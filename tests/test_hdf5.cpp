@@ -23,28 +23,17 @@
 #include "rocksweep/io/hdf5.hpp"
 #include "rocksweep/io/history_file.hpp"
 #include "rocksweep/io/spectra_file.hpp"
+#include "spectra_test_support.hpp"
 #include "test_support.hpp"
 
 namespace fs = std::filesystem;
 using namespace rocksweep;
 using rocksweep::testing::bits;
 using rocksweep::testing::TempDir;
+using rocksweep::testing::expect_same_results;
+using rocksweep::testing::small_spec;
 
 namespace {
-
-
-SweepSpec small_spec() {
-    SweepSpec spec;
-    spec.block = rectangular_block(0.3, 1.36, 3361);
-    spec.omega_ratio = Axis{1.0, 4.0, 4};
-    spec.amplitude_ratio = Axis{1.0, 3.0, 3};
-    spec.phase = 0.25;
-    spec.scenarios.push_back(Scenario{"free", free_anchorage(), 0.0, 1.0});
-    spec.scenarios.push_back(Scenario{
-        "constant_alpha", constant_anchorage(spec.block, 0.4 * 3361 * 9.81, spec.block.alpha_rad),
-        1.0, 1.0});
-    return spec;
-}
 
 /// Values that make an index mix-up visible: every cell differs in every column, NaNs where
 /// the real writer puts them, and a few cells not done.
@@ -78,18 +67,6 @@ Provenance some_provenance() {
     return p;
 }
 
-void expect_same_results(const SweepResults& a, const SweepResults& b) {
-    EXPECT_EQ(a.outcome, b.outcome);
-    EXPECT_EQ(bits(a.max_rotation), bits(b.max_rotation));
-    EXPECT_EQ(a.impacts, b.impacts);
-    EXPECT_EQ(a.impacts_total, b.impacts_total);
-    EXPECT_EQ(bits(a.t_overturn), bits(b.t_overturn));
-    EXPECT_EQ(bits(a.peak_force_ratio), bits(b.peak_force_ratio));
-    EXPECT_EQ(a.broken, b.broken);
-    EXPECT_EQ(bits(a.mu_required), bits(b.mu_required));
-    EXPECT_EQ(a.pivot_uplift, b.pivot_uplift);
-    EXPECT_EQ(a.done, b.done);
-}
 
 }  // namespace
 

@@ -1,6 +1,7 @@
 #include "rocksweep/app/run_support.hpp"
 
 #include <cstring>
+#include <stdexcept>
 #include <ctime>
 
 #include "rocksweep/core/errors.hpp"
@@ -38,14 +39,23 @@ OutputVerdict agree_on_output(const MpiSession& mpi, std::ostream& log, const st
         try {
             if (prepare()) verdict = static_cast<int>(OutputVerdict::nothing_to_do);
         } catch (const InputError& e) {
-            release();
-            verdict = static_cast<int>(OutputVerdict::refused);
-            why = cli_message(e);
+            verdict = static_cast<int>(OutputVerdict::refused), why = cli_message(e);
+        } catch (const std::runtime_error& e) {
+            verdict = static_cast<int>(OutputVerdict::failed), why = e.what();
         }
+        if (!why.empty()) release();  // the output is given up before the message
     }
-    verdict = mpi.broadcast_from_root(verdict);
+    mpi.broadcast(verdict);
     if (!why.empty()) log << "rocksweep: error: " << why << "\n";
     return static_cast<OutputVerdict>(verdict);
+}
+
+int exit_status(OutputVerdict v) {
+    switch (v) {
+        case OutputVerdict::refused: return 2;
+        case OutputVerdict::failed: return 1;
+        default: return 0;
+    }
 }
 
 ComputeFn cell_results_compute(std::function<void(std::size_t, std::size_t, CellResult*)> compute) {

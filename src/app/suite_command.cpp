@@ -149,8 +149,7 @@ int run_suite(const Options& opts, const SuiteCommand& cmd, const std::string& c
     Start start;
     const OutputVerdict verdict = agree_on_output(
         mpi, log, [&] { prepare_output(start, plan, cmd.run, log); return start.complete; }, [&] { start.claim.reset(); });
-    if (verdict == OutputVerdict::nothing_to_do) return 0;
-    if (verdict == OutputVerdict::refused) return 2;
+    if (verdict != OutputVerdict::go) return exit_status(verdict);
 
     const Provenance base{ROCKSWEEP_VERSION, config_text, utc_now(), mpi.size(), 0.0};
     SweepResults& results = start.results;

@@ -1,5 +1,6 @@
-// `rocksweep sweep`: build the work list, schedule it over the ranks, and keep rank 0's file
-// up to date so that nothing computed is lost to a kill.
+// `rocksweep sweep`: build the work list, schedule it over the ranks, and stream rank 0's
+// results into the file as they come, so that nothing computed is lost to a kill and rank 0's
+// memory does not grow with the grid.
 #include <cstring>
 #include <iostream>
 #include <optional>
@@ -7,13 +8,13 @@
 #include "rocksweep/app/cli.hpp"
 #include "rocksweep/app/run_support.hpp"
 #include "rocksweep/core/errors.hpp"
-#include "rocksweep/physics/integrator.hpp"
-#include "rocksweep/io/output_claim.hpp"
-#include "rocksweep/parallel/progress.hpp"
 #include "rocksweep/grid/refine.hpp"
-#include "rocksweep/parallel/scheduler.hpp"
-#include "rocksweep/io/spectra_file.hpp"
 #include "rocksweep/grid/work_part.hpp"
+#include "rocksweep/io/output_claim.hpp"
+#include "rocksweep/io/spectra_stream.hpp"
+#include "rocksweep/parallel/progress.hpp"
+#include "rocksweep/parallel/scheduler.hpp"
+#include "rocksweep/physics/integrator.hpp"
 
 #ifndef ROCKSWEEP_VERSION
 #define ROCKSWEEP_VERSION "unknown"
@@ -23,211 +24,303 @@ namespace rocksweep {
 
 namespace {
 
-/// Rank 0's view of the output before any work: the output held for this run, and where the
-/// results start from.
-struct Start {
-    std::optional<OutputClaim> claim;
-    SweepResults results;
-    std::vector<IndexRange> todo;
-    bool complete = false;  ///< resumed a finished sweep: nothing to compute, nothing to write
-};
+// Rank 0 checkpoints early when the cells it holds reach this: its memory bound between
+// checkpoints, whatever the grid and the cell rate (about 1 M cells).
+constexpr std::size_t max_pending_bytes = std::size_t{64} << 20;
 
-void prepare_output(Start& s, const SweepSpec& spec, const IntegratorSettings& settings, const SweepCommand& cmd,
-                    WorkPart part, std::ostream& log) {
-    if (cmd.resume && cmd.overwrite) throw InputError("resume", "with --overwrite", "one of --resume, --overwrite");
-    s.claim.emplace("output", cmd.output);
-    s.results.resize(spec.cell_count());
-    const bool exists = s.claim->exists();
-    if (exists && cmd.resume) {
-        s.results = read_spectra_results(cmd.output, spec, settings);
-    } else if (exists && !cmd.overwrite) {
-        throw InputError("output", cmd.output, "a new file; it exists: pass --resume to continue it or --overwrite to replace it");
+// Cells whose `done` byte rank 0 reads at once when it looks for the cells still to compute.
+constexpr std::size_t scan_cells = std::size_t{1} << 24;
+
+/// The runs of cells the file does not hold yet, read a block at a time (1 byte per cell of
+/// the block, not of the grid).
+std::vector<IndexRange> missing_cells(const SpectraStream& stream, std::size_t total) {
+    std::vector<IndexRange> todo;
+    std::vector<std::uint8_t> done;
+    for (std::size_t first = 0; first < total; first += scan_cells) {
+        done.resize(std::min(scan_cells, total - first));
+        stream.read_column("done", first, done.size(), done.data());
+        for (IndexRange r : missing_ranges(done)) {
+            r.first += first;
+            if (!todo.empty() && todo.back().first + todo.back().count == r.first) todo.back().count += r.count;
+            else todo.push_back(r);
+        }
     }
-    s.todo = restrict_to_part(missing_ranges(s.results.done), part);
-    // A requeued job resumes a sweep (or its part) that already ended: saving again would only
-    // replace its recorded wall time with this run's few milliseconds.
-    s.complete = exists && cmd.resume && s.todo.empty();
-    if (!(exists && cmd.resume) || cmd.quiet) return;
-    const std::size_t total = spec.cell_count();
-    if (!s.complete)
-        log << "resuming " << cmd.output << ": " << s.results.done_count() << " of " << total << " cells already done\n";
-    else if (part.count > 1)
-        log << cmd.output << ": part " << part.index << " of " << part.count << " already complete (" << cells_in_part(total, part)
-            << " cells); nothing to do\n";
-    else
-        log << cmd.output << ": sweep already complete (" << total << " cells); nothing to do\n";
+    return todo;
 }
 
-}  // namespace
-
-int run_sweep(const Options& opts, const SweepCommand& cmd, const std::string& config_text, const MpiSession& mpi) {
-    const SweepSpec spec = make_sweep_spec(opts);  // the same on every rank, so is any error
-    IntegratorSettings settings = make_settings(opts.numerics);
-    const WorkPart part = cmd.part.empty() ? WorkPart{} : parse_work_part(cmd.part);
-    if (part.count > 1 && cmd.refine_stride != 0)
-        throw InputError("part", cmd.part, "not with --refine: refinement needs the whole grid between its passes");
-    RootStream log(mpi);
-    const StopSignals signals;
-
-    // The output is claimed on rank 0 only; the verdict reaches every rank before any work.
-    Start start;
-    int verdict = 0;
-    std::string why;
-    if (mpi.is_root()) {
-        try {
-            prepare_output(start, spec, settings, cmd, part, log);
-        } catch (const InputError& e) {
-            start.claim.reset();  // releases the output before the message
-            verdict = 2;
-            why = cli_message(e);
-        }
-    }
-    constexpr int nothing_to_do = -1;
-    if (start.complete) verdict = nothing_to_do;
-    if (mpi.size() > 1) MPI_Bcast(&verdict, 1, MPI_INT, 0, mpi.comm());
-    if (verdict == nothing_to_do) return 0;
-    if (verdict != 0) {
-        log << "rocksweep: error: " << why << "\n";
-        return verdict;
+/// One sweep, in the order it runs: plan (constructor), agree on the output, run the passes,
+/// finish. Rank 0 alone holds the output; every rank runs the same passes.
+class SweepRun {
+public:
+    SweepRun(const Options& opts, const SweepCommand& cmd, const std::string& config_text, const MpiSession& mpi)
+        : cmd_(cmd), mpi_(mpi), spec_(make_sweep_spec(opts)),  // the same on every rank, so is any error
+          settings_(make_settings(opts.numerics)), lanes_(opts.numerics.lanes),
+          part_(cmd.part.empty() ? WorkPart{} : parse_work_part(cmd.part)), log_(mpi) {
+        if (part_.count > 1 && cmd.refine_stride != 0)
+            throw InputError("part", cmd.part, "not with --refine: refinement needs the whole grid between its passes");
+        prov_.version = ROCKSWEEP_VERSION;
+        prov_.config_text = config_text;
+        prov_.created_utc = utc_now();
+        prov_.ranks = mpi.size();
     }
 
-    Provenance prov;
-    prov.version = ROCKSWEEP_VERSION;
-    prov.config_text = config_text;
-    prov.created_utc = utc_now();
-    prov.ranks = mpi.size();
+    /// Rank 0 claims the output (or finds it complete, or refuses it); the verdict reaches every
+    /// rank before any work. Returns the exit status when there is nothing to run.
+    std::optional<int> agree_on_output();
+    void announce();
+    /// Runs every pass (one, or refinement's) until done or stopped (a signal, a failed save).
+    void run_passes();
+    /// Rank 0's last save and report. Returns the exit status.
+    int finish();
 
-    SweepResults& results = start.results;
-    const std::size_t total = spec.cell_count();
-    std::size_t done_now = 0;
-    const double t0 = MPI_Wtime();
-    double last_save = t0;
+private:
+    void prepare_output();
+    void save();
+    ScheduleStats run_pass(const std::vector<IndexRange>& todo);
+    std::vector<IndexRange> refinement_pass(const Refinement& refine, int k);
+    void infer_the_rest(const Refinement& refine);
+    void report_friction();
+
+    const SweepCommand& cmd_;
+    const MpiSession& mpi_;
+    const SweepSpec spec_;
+    IntegratorSettings settings_;
+    const int lanes_;
+    const WorkPart part_;
+    RootStream log_;
+    const StopSignals signals_;
+    Provenance prov_;
+    // Rank 0 only:
+    std::optional<OutputClaim> claim_;
+    std::optional<SpectraStream> stream_;
+    std::vector<IndexRange> todo_;
+    bool already_complete_ = false;
+    double t0_ = 0.0, last_save_ = 0.0;
     // A failed save (e.g. a full disk) stops the run like a signal, so that every rank leaves
     // the scheduler normally; rank 0 reports it once at the end.
-    std::string save_error;
-    auto save = [&] {
-        prov.wall_s = MPI_Wtime() - t0;
-        try {
-            write_spectra(cmd.output, spec, results, prov, settings);
-        } catch (const std::exception& e) {
-            if (save_error.empty()) save_error = e.what();
-        }
-        last_save = MPI_Wtime();
-    };
-    Progress* progress = nullptr;
-    const auto scheduler = make_mpi_scheduler(mpi.comm());
+    std::string save_error_;
+};
+
+void SweepRun::prepare_output() {
+    if (cmd_.resume && cmd_.overwrite) throw InputError("resume", "with --overwrite", "one of --resume, --overwrite");
+    claim_.emplace("output", cmd_.output);
+    const bool exists = claim_->exists();
+    if (exists && !cmd_.resume && !cmd_.overwrite)
+        throw InputError("output", cmd_.output, "a new file; it exists: pass --resume to continue it or --overwrite to replace it");
+    const bool resuming = exists && cmd_.resume;
+    stream_.emplace(cmd_.output, spec_, settings_, prov_, resuming);
+    const std::size_t total = spec_.cell_count();
+    todo_ = restrict_to_part(resuming ? missing_cells(*stream_, total) : std::vector<IndexRange>{{0, total}}, part_);
+    // A requeued job resumes a sweep (or its part) that already ended: saving again would only
+    // replace its recorded wall time with this run's few milliseconds.
+    already_complete_ = resuming && todo_.empty();
+    if (!resuming || cmd_.quiet) return;
+    if (!already_complete_)
+        log_ << "resuming " << cmd_.output << ": " << stream_->done_count() << " of " << total << " cells already done\n";
+    else if (part_.count > 1)
+        log_ << cmd_.output << ": part " << part_.index << " of " << part_.count << " already complete ("
+             << cells_in_part(total, part_) << " cells); nothing to do\n";
+    else
+        log_ << cmd_.output << ": sweep already complete (" << total << " cells); nothing to do\n";
+}
+
+std::optional<int> SweepRun::agree_on_output() {
+    const OutputVerdict verdict = rocksweep::agree_on_output(
+        mpi_, log_, [&] { prepare_output(); return already_complete_; }, [&] { stream_.reset(), claim_.reset(); });
+    if (verdict != OutputVerdict::go) return exit_status(verdict);
+    t0_ = last_save_ = MpiSession::wall_time();
+    return std::nullopt;
+}
+
+void SweepRun::announce() {
+    if (cmd_.quiet) return;
+    const std::size_t total = spec_.cell_count();
+    log_ << "sweep: " << spec_.scenarios.size() << " scenarios x " << spec_.amplitude_ratio.points << " amplitudes x "
+         << spec_.omega_ratio.points << " frequencies = " << total << " cells";
+    if (part_.count > 1) log_ << ", part " << part_.index << " of " << part_.count << ": " << cells_in_part(total, part_);
+    log_ << " on " << mpi_.size() << " rank(s) -> " << cmd_.output << "\n";
+}
+
+void SweepRun::save() {
+    try {
+        stream_->checkpoint();
+    } catch (const std::exception& e) {
+        if (save_error_.empty()) save_error_ = e.what();
+    }
+    last_save_ = MpiSession::wall_time();
+}
+
+ScheduleStats SweepRun::run_pass(const std::vector<IndexRange>& todo) {
+    const auto scheduler = make_mpi_scheduler(mpi_.comm());
+    std::size_t n = 0, done_now = 0;
+    for (const IndexRange& r : todo) n += r.count;
+    Progress bar(n, cmd_.quiet || !mpi_.is_root());
 
     ScheduleOptions so;
     so.record_bytes = sizeof(CellResult);
-    so.max_chunk = cmd.max_chunk;
-    so.min_chunk = std::min<std::size_t>(8, cmd.max_chunk);
-    so.stop_requested = [&] { return StopSignals::received() != 0 || !save_error.empty(); };
-    so.tick_interval_s = std::min(0.5, cmd.checkpoint_s / 2);
+    so.max_chunk = cmd_.max_chunk;
+    so.min_chunk = std::min<std::size_t>(8, cmd_.max_chunk);
+    so.stop_requested = [&] { return StopSignals::received() != 0 || !save_error_.empty(); };
+    so.tick_interval_s = std::min(0.5, cmd_.checkpoint_s / 2);
     so.on_tick = [&] {
-        if (progress) progress->update(done_now);
-        if (MPI_Wtime() - last_save >= cmd.checkpoint_s) save();
+        bar.update(done_now);
+        if (MpiSession::wall_time() - last_save_ >= cmd_.checkpoint_s) save();
     };
     // A slow cell polls this every few hundred steps: a stop is honoured in the middle of a
     // chunk, which is then abandoned (not done) rather than finished.
+    IntegratorSettings settings = settings_;
     settings.stop_requested = [&] { return StopSignals::received() != 0 || scheduler->stop_pending(); };
-    const int lanes = opts.numerics.lanes;
     const ComputeFn compute = [&](std::size_t first, std::size_t count, std::byte* out) {
         std::vector<CellResult> buf(count);
         try {
-            compute_cells(spec, settings, first, count, buf.data(), lanes);
+            compute_cells(spec_, settings, first, count, buf.data(), lanes_);
         } catch (const Interrupted&) {
             throw ChunkAbandoned();
         }
         std::memcpy(out, buf.data(), count * sizeof(CellResult));
     };
+    std::vector<CellResult> cells;
     const SinkFn sink = [&](std::size_t first, std::size_t count, const std::byte* records) {
-        for (std::size_t i = 0; i < count; ++i) {
-            CellResult r;
-            std::memcpy(&r, records + i * sizeof(CellResult), sizeof r);
-            results.store(first + i, r);
-        }
+        cells.resize(count);
+        std::memcpy(cells.data(), records, count * sizeof(CellResult));
+        stream_->add(first, count, cells.data());
         done_now += count;
+        if (stream_->pending_bytes() >= max_pending_bytes) save();
     };
-    auto run_pass = [&](const std::vector<IndexRange>& todo) {
-        std::size_t n = 0;
-        for (const IndexRange& r : todo) n += r.count;
-        Progress bar(n, cmd.quiet || !mpi.is_root());
-        progress = &bar;
-        done_now = 0;
-        const ScheduleStats stats = scheduler->run(todo, so, compute, sink);
-        bar.update(done_now);
-        bar.finish();
-        progress = nullptr;
-        return stats;
-    };
+    const ScheduleStats stats = scheduler->run(todo, so, compute, sink);
+    bar.update(done_now);
+    bar.finish();
+    return stats;
+}
 
-    if (mpi.is_root() && !cmd.quiet) {
-        log << "sweep: " << spec.scenarios.size() << " scenarios x " << spec.amplitude_ratio.points << " amplitudes x "
-            << spec.omega_ratio.points << " frequencies = " << total << " cells";
-        if (part.count > 1) log << ", part " << part.index << " of " << part.count << ": " << cells_in_part(total, part);
-        log << " on " << mpi.size() << " rank(s) -> " << cmd.output << "\n";
-    }
-    bool stopped = false;
-    if (cmd.refine_stride == 0) {
-        stopped = run_pass(start.todo).stopped;
-    } else {
-        // Every rank runs the same number of passes; only rank 0 knows each pass's cells.
-        const std::size_t per = spec.cells_per_scenario();
-        const Refinement refine(spec.amplitude_ratio.points, spec.omega_ratio.points, cmd.refine_stride);
-        for (int k = 0; k < refine.passes() && !stopped; ++k) {
-            std::vector<IndexRange> todo;
-            if (mpi.is_root()) {
-                for (std::size_t s = 0; s < spec.scenarios.size(); ++s)
-                    for (std::size_t i : refine.cells_for_pass(k, &results.outcome[s * per], &results.done[s * per])) {
-                        if (!todo.empty() && todo.back().first + todo.back().count == s * per + i) ++todo.back().count;
-                        else todo.push_back({s * per + i, 1});
-                    }
-                if (!cmd.quiet) log << "refinement pass " << k + 1 << " of " << refine.passes() << "\n";
-            }
-            stopped = run_pass(todo).stopped;
+/// The cells the passes before `k` compute in a run that is never interrupted, replayed from
+/// the outcomes: a pass must choose from these alone, not from what a killed run had computed
+/// beyond them (a corner known early would make a square mixed sooner, and the resumed sweep
+/// would compute cells the uninterrupted one infers).
+std::vector<std::uint8_t> known_before(const Refinement& refine, int k, const std::vector<std::uint8_t>& outcome) {
+    std::vector<std::uint8_t> known(outcome.size(), cell_pending);
+    for (int j = 0; j < k; ++j)
+        for (std::size_t i : refine.cells_for_pass(j, outcome.data(), known.data())) known[i] = cell_computed;
+    return known;
+}
+
+std::vector<IndexRange> SweepRun::refinement_pass(const Refinement& refine, int k) {
+    // What earlier passes found is read back from the file: 3 bytes per cell of one scenario.
+    save();
+    const std::size_t per = spec_.cells_per_scenario();
+    std::vector<std::uint8_t> outcome(per), done(per);
+    std::vector<IndexRange> todo;
+    for (std::size_t s = 0; s < spec_.scenarios.size() && save_error_.empty(); ++s) {
+        stream_->read_outcomes(s, outcome.data(), done.data());
+        const std::vector<std::uint8_t> known = known_before(refine, k, outcome);
+        for (std::size_t i : refine.cells_for_pass(k, outcome.data(), known.data())) {
+            if (done[i] == cell_computed) continue;  // computed before a kill
+            if (!todo.empty() && todo.back().first + todo.back().count == s * per + i) ++todo.back().count;
+            else todo.push_back({s * per + i, 1});
         }
-        if (mpi.is_root() && !stopped)
-            for (std::size_t s = 0; s < spec.scenarios.size(); ++s)
-                refine.fill(&results.outcome[s * per], &results.done[s * per]);
     }
+    if (!cmd_.quiet) log_ << "refinement pass " << k + 1 << " of " << refine.passes() << "\n";
+    return todo;
+}
+
+void SweepRun::infer_the_rest(const Refinement& refine) {
+    save();
+    const std::size_t per = spec_.cells_per_scenario();
+    std::vector<std::uint8_t> outcome(per), done(per);
+    for (std::size_t s = 0; s < spec_.scenarios.size() && save_error_.empty(); ++s) {
+        try {
+            stream_->read_outcomes(s, outcome.data(), done.data());
+            std::vector<std::uint8_t> known = known_before(refine, refine.passes(), outcome);
+            refine.fill(outcome.data(), known.data());
+            stream_->add_inferred(s, outcome.data(), done.data(), known.data());
+        } catch (const std::exception& e) {
+            save_error_ = e.what();
+        }
+    }
+}
+
+void SweepRun::run_passes() {
+    if (cmd_.refine_stride == 0) {
+        run_pass(todo_);
+        return;
+    }
+    // Every rank runs the same number of passes; only rank 0 knows each pass's cells.
+    const Refinement refine(spec_.amplitude_ratio.points, spec_.omega_ratio.points, cmd_.refine_stride);
+    for (int k = 0; k < refine.passes(); ++k) {
+        const std::vector<IndexRange> todo = mpi_.is_root() ? refinement_pass(refine, k) : std::vector<IndexRange>{};
+        if (run_pass(todo).stopped) return;
+    }
+    if (mpi_.is_root()) infer_the_rest(refine);
+}
+
+void SweepRun::report_friction() {
+    // Read back a block at a time: the cells of earlier runs of a resumed sweep count too.
+    const std::size_t total = spec_.cell_count();
+    std::size_t slide = 0, jump = 0;
+    std::vector<double> mu;
+    std::vector<std::uint8_t> uplift, done;
+    for (std::size_t first = 0; first < total; first += scan_cells) {
+        const std::size_t n = std::min(scan_cells, total - first);
+        mu.resize(n), uplift.resize(n), done.resize(n);
+        stream_->read_column("mu_required", first, n, mu.data());
+        stream_->read_column("pivot_uplift", first, n, uplift.data());
+        stream_->read_column("done", first, n, done.data());
+        for (std::size_t i = 0; i < n; ++i) {
+            slide += done[i] == cell_computed && mu[i] > spec_.friction;
+            jump += uplift[i];
+        }
+    }
+    log_ << slide << " cells need more friction than mu_s = " << spec_.friction
+         << " (their pure-rocking results assume no sliding; see mu_required)";
+    if (jump) log_ << ", " << jump << " would lift the pivot (pivot_uplift)";
+    log_ << "\n";
+}
+
+int SweepRun::finish() {
     // Rank 0 alone decides the job's status: a worker that exited non-zero first would make
     // mpirun kill rank 0, maybe in the middle of its last save.
-    if (!mpi.is_root()) return 0;
-    if (save_error.empty()) save();
-    if (!save_error.empty()) {
-        log << "rocksweep: error: " << save_error << "\n";
+    if (!mpi_.is_root()) return 0;
+    if (save_error_.empty()) {
+        try {
+            stream_->finish(MpiSession::wall_time() - t0_);
+        } catch (const std::exception& e) {
+            save_error_ = e.what();
+        }
+    }
+    if (!save_error_.empty()) {
+        log_ << "rocksweep: error: " << save_error_ << "\n";
         return 1;
     }
-    const std::size_t done = results.done_count();
-    if (part.count > 1 && restrict_to_part(missing_ranges(results.done), part).empty()) {
-        if (!cmd.quiet)
-            log << "wrote part " << part.index << " of " << part.count << " (" << cells_in_part(total, part) << " of "
-                << total << " cells) to " << cmd.output << "; join the parts with rocksweep merge\n";
+    const std::size_t total = spec_.cell_count(), done = stream_->done_count();
+    if (part_.count > 1 && restrict_to_part(missing_cells(*stream_, total), part_).empty()) {
+        if (!cmd_.quiet)
+            log_ << "wrote part " << part_.index << " of " << part_.count << " (" << cells_in_part(total, part_) << " of "
+                 << total << " cells) to " << cmd_.output << "; join the parts with rocksweep merge\n";
         return 0;
     }
-    if (done < total && part.count > 1) {
-        log << "stopped by signal " << StopSignals::stopping_signal() << ": part " << part.index << " of " << part.count << " not finished, "
-            << done << " cells saved in " << cmd.output << "; rerun with --resume to continue\n";
+    if (done < total && part_.count > 1) {
+        log_ << "stopped by signal " << StopSignals::stopping_signal() << ": part " << part_.index << " of " << part_.count
+             << " not finished, " << done << " cells saved in " << cmd_.output << "; rerun with --resume to continue\n";
         return StopSignals::exit_status();
     }
     if (done < total) {
-        log << "stopped by signal " << StopSignals::stopping_signal() << ": " << done << " of " << total << " cells saved in " << cmd.output
-            << "; rerun with --resume to continue\n";
+        log_ << "stopped by signal " << StopSignals::stopping_signal() << ": " << done << " of " << total
+             << " cells saved in " << cmd_.output << "; rerun with --resume to continue\n";
         return StopSignals::exit_status();
     }
-    if (spec.friction > 0.0 && !cmd.quiet) {
-        std::size_t slide = 0, jump = 0;
-        for (std::size_t i = 0; i < total; ++i) {
-            slide += results.done[i] == cell_computed && results.mu_required[i] > spec.friction;
-            jump += results.pivot_uplift[i];
-        }
-        log << slide << " cells need more friction than mu_s = " << spec.friction
-            << " (their pure-rocking results assume no sliding; see mu_required)";
-        if (jump) log << ", " << jump << " would lift the pivot (pivot_uplift)";
-        log << "\n";
-    }
-    if (!cmd.quiet) log << "wrote " << cmd.output << "\n";
+    if (spec_.friction > 0.0 && !cmd_.quiet) report_friction();
+    if (!cmd_.quiet) log_ << "wrote " << cmd_.output << "\n";
     return 0;
+}
+
+}  // namespace
+
+int run_sweep(const Options& opts, const SweepCommand& cmd, const std::string& config_text, const MpiSession& mpi) {
+    SweepRun sweep(opts, cmd, config_text, mpi);  // the cells, the settings, the part
+    if (const std::optional<int> status = sweep.agree_on_output()) return *status;
+    sweep.announce();
+    sweep.run_passes();
+    return sweep.finish();
 }
 
 }  // namespace rocksweep

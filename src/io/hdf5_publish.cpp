@@ -64,15 +64,15 @@ namespace {
 
 bool disk_full(int err) { return err == ENOSPC || err == EDQUOT || err == EFBIG; }
 
+}  // namespace
+
 /// One line for a save that failed: the file, the reason, and what the user still has.
-std::string write_failure(const std::string& path, int err, const std::string& detail) {
+std::runtime_error write_failure(const std::string& path, int err, const std::string& detail) {
     std::string text = "cannot write " + path + ": " + (disk_full(err) ? "no space left on device" : detail);
     std::error_code ec;
     if (std::filesystem::is_regular_file(path, ec)) text += " (" + path + " still holds the previous save)";
-    return text;
+    return std::runtime_error(text);
 }
-
-}  // namespace
 
 void publish_atomically(const std::string& path,
                         const std::function<void(const std::string& tmp_path)>& write) {
@@ -91,10 +91,10 @@ void publish_atomically(const std::string& path,
         throw;
     } catch (const Hdf5Error& e) {
         remove_tmp();
-        throw std::runtime_error(write_failure(path, e.sys_errno(), e.what()));
+        throw write_failure(path, e.sys_errno(), e.what());
     } catch (const std::system_error& e) {
         remove_tmp();
-        throw std::runtime_error(write_failure(path, e.code().value(), e.what()));
+        throw write_failure(path, e.code().value(), e.what());
     } catch (...) {
         remove_tmp();
         throw;
@@ -128,27 +128,29 @@ void write_file_bytes(const std::string& path, std::span<const unsigned char> by
     if (::close(fd) != 0) throw std::system_error(errno, std::generic_category(), "closing " + path);
 }
 
+void write_h5_image(const std::string& tmp, const std::string& output, const std::function<void(const File&)>& write) {
+    MemoryImage image;
+    std::size_t size = 0;
+    {
+        File f = File::create_in_memory(tmp, image);
+        write(f);
+        // The image's size is the allocated end of the file; the driver's buffer is rounded
+        // up to its increment. Flushed first: a flush allocates the last metadata.
+        check(H5Fflush(f.id(), H5F_SCOPE_LOCAL), "flushing '" + tmp + "'");
+        size = static_cast<std::size_t>(check(H5Fget_file_image(f.id(), nullptr, 0), "sizing '" + tmp + "'"));
+        f.close();
+    }
+    // Past `size` the buffer must be the driver's zero padding: anything else would be
+    // metadata the close wrote after the flush, and a file cut there would be corrupt.
+    if (image.bytes.size() < size ||
+        std::any_of(image.bytes.begin() + static_cast<std::ptrdiff_t>(size), image.bytes.end(),
+                    [](unsigned char b) { return b != 0; }))
+        throw Hdf5Error("building '" + tmp + "' in memory: the closed file does not end where HDF5 said");
+    write_file_bytes(tmp, std::span<const unsigned char>(image.bytes.data(), size), output);
+}
+
 void publish_h5_atomically(const std::string& path, const std::function<void(const File&)>& write) {
-    publish_atomically(path, [&](const std::string& tmp) {
-        MemoryImage image;
-        std::size_t size = 0;
-        {
-            File f = File::create_in_memory(tmp, image);
-            write(f);
-            // The image's size is the allocated end of the file; the driver's buffer is rounded
-            // up to its increment. Flushed first: a flush allocates the last metadata.
-            check(H5Fflush(f.id(), H5F_SCOPE_LOCAL), "flushing '" + tmp + "'");
-            size = static_cast<std::size_t>(check(H5Fget_file_image(f.id(), nullptr, 0), "sizing '" + tmp + "'"));
-            f.close();
-        }
-        // Past `size` the buffer must be the driver's zero padding: anything else would be
-        // metadata the close wrote after the flush, and a file cut there would be corrupt.
-        if (image.bytes.size() < size ||
-            std::any_of(image.bytes.begin() + static_cast<std::ptrdiff_t>(size), image.bytes.end(),
-                        [](unsigned char b) { return b != 0; }))
-            throw Hdf5Error("building '" + tmp + "' in memory: the closed file does not end where HDF5 said");
-        write_file_bytes(tmp, std::span<const unsigned char>(image.bytes.data(), size), path);
-    });
+    publish_atomically(path, [&](const std::string& tmp) { write_h5_image(tmp, path, write); });
 }
 
 }  // namespace rocksweep::h5

@@ -39,9 +39,8 @@ MpiSession::~MpiSession() {
     if (!finalized) MPI_Finalize();
 }
 
-int MpiSession::broadcast_from_root(int value) const {
-    if (size_ > 1) MPI_Bcast(&value, 1, MPI_INT, 0, MPI_COMM_WORLD);
-    return value;
+void MpiSession::broadcast(int& value) const {
+    if (size_ > 1) MPI_Bcast(&value, 1, MPI_INT, 0, comm());
 }
 
 double MpiSession::wall_time() noexcept { return MPI_Wtime(); }

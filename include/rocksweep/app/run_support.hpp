@@ -38,12 +38,17 @@ private:
 };
 
 /// What every rank does after rank 0 looked at the output.
-enum class OutputVerdict { go, nothing_to_do, refused };
+enum class OutputVerdict { go, nothing_to_do, refused, failed };
+
+/// The exit status of a verdict that ends the run: 0 nothing to do, 2 refused (bad input),
+/// 1 failed (the output could not be laid out, e.g. a full disk).
+int exit_status(OutputVerdict v);
 
 /// Rank 0 calls `prepare`, which claims and reads the output and returns true if there is
-/// nothing left to do (a finished run resumed), or throws InputError; `release` then gives the
-/// output up before the message. Every rank learns the verdict; a refusal is printed once, by
-/// rank 0, as "rocksweep: error: ...". Collective.
+/// nothing left to do (a finished run resumed), or throws InputError (refused) or
+/// std::runtime_error (failed); `release` then gives the output up before the message. Every
+/// rank learns the verdict; an error is printed once, by rank 0, as "rocksweep: error: ...".
+/// Collective.
 OutputVerdict agree_on_output(const MpiSession& mpi, std::ostream& log, const std::function<bool()>& prepare,
                               const std::function<void()>& release);
 

@@ -167,6 +167,10 @@ public:
     static File create(const std::string& path);
     /// Opens an existing file read-only. Throws Hdf5Error naming the path.
     static File open_read_only(const std::string& path);
+    /// Opens an existing file for writing without taking HDF5's file lock, so that a reader
+    /// holding the file open (h5py, ncdump) does not make a writer fail. Meant for in-place
+    /// updates that do not move metadata (update_attribute). Throws Hdf5Error naming the path.
+    static File open_for_update(const std::string& path);
     /// Creates a file held in memory only (HDF5's core driver, no backing store): `name` is
     /// for messages; nothing reaches the disk. When it is closed, its final bytes (what the
     /// file on disk would hold, then zero padding; its size is what H5Fget_file_image reports
@@ -253,6 +257,30 @@ template <Element T>
 Array2<T> read_2d(const Location& where, std::string_view name);
 
 // ---------------------------------------------------------------------------------------
+// Datasets written in place, behind HDF5's back (hdf5_inplace.cpp)
+
+/// Creates dataset `name` of shape `dims`: contiguous, uncompressed, its storage allocated at
+/// creation and never filled by HDF5 (on disk a hole, read as zeros until written). Its bytes
+/// can then be written with pwrite at raw_data_offset() while no HDF5 handle is open: such a
+/// write changes no metadata, so a kill in the middle leaves a valid file. Throws Hdf5Error.
+template <Element T>
+Dataset create_fixed_dataset(const Location& where, std::string_view name, std::span<const hsize_t> dims);
+
+/// Byte offset in its file of the raw data of a dataset made by create_fixed_dataset, and the
+/// size of one element. Throws Hdf5Error if the dataset is not contiguous with allocated storage
+/// (e.g. written by write_dataset), or its type is not little-endian.
+struct RawPlacement {
+    std::uint64_t offset = 0;
+    std::size_t element_bytes = 0;
+};
+RawPlacement raw_placement(const Dataset& ds);
+
+/// Overwrites the value of an existing scalar numeric attribute in place (same type, same size:
+/// no metadata moves, unlike write_attribute, which deletes and recreates). Throws Hdf5Error.
+void update_attribute(const Object& obj, std::string_view name, double value);
+void update_attribute(const Object& obj, std::string_view name, std::int64_t value);
+
+// ---------------------------------------------------------------------------------------
 // Attributes (scalar unless stated; an existing attribute of the same name is replaced)
 
 void write_attribute(const Object& obj, std::string_view name, double value);
@@ -321,6 +349,15 @@ void publish_atomically(const std::string& path,
 /// publishes data that is on the disk. Throws InputError("output", output, ...) if `path`
 /// cannot be created, std::system_error carrying errno if writing it fails.
 void write_file_bytes(const std::string& path, std::span<const unsigned char> bytes, const std::string& output);
+
+/// The error publish_atomically throws for a failed write of `path` (errno `err`, 0 if none):
+/// "cannot write PATH: REASON", with the note about the previous save. For writers that update
+/// `path` in place and must report a full disk in the same words.
+std::runtime_error write_failure(const std::string& path, int err, const std::string& detail);
+
+/// Builds an HDF5 file in memory with `write` and writes its bytes to `tmp` (write_file_bytes;
+/// `output` names the file in messages). Throws like write_file_bytes, Hdf5Error.
+void write_h5_image(const std::string& tmp, const std::string& output, const std::function<void(const File&)>& write);
 
 /// publish_atomically for an HDF5 file: `write` fills a file built in memory, whose bytes are
 /// then written to the tmp name by write_file_bytes. HDF5 itself never meets a full disk (a

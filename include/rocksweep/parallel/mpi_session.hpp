@@ -33,9 +33,9 @@ public:
     /// The thread support level MPI granted (MPI_THREAD_SINGLE ... MPI_THREAD_MULTIPLE).
     int thread_level() const noexcept { return thread_level_; }
     MPI_Comm comm() const noexcept { return MPI_COMM_WORLD; }
-    /// Rank 0's `value` on every rank (collective; no message with one rank).
-    int broadcast_from_root(int value) const;
-    /// Seconds since an arbitrary moment of this process (MPI_Wtime), for durations.
+    /// Rank 0's `value` on every rank (collective; nothing is sent on a job of one rank).
+    void broadcast(int& value) const;
+    /// Seconds on a wall clock (MPI_Wtime): differences between two calls on one rank are meaningful.
     static double wall_time() noexcept;
     /// Ends every rank of the job with exit status `code` (MPI_Abort on MPI_COMM_WORLD).
     [[noreturn]] void abort(int code) const noexcept;

@@ -1,0 +1,103 @@
+#pragma once
+/// The spectra file of a running sweep, written as chunks complete (layout: docs/hdf5.md,
+/// "Streaming"). Rank 0 holds only the cells finished since the last checkpoint; a checkpoint
+/// writes those cells' bytes in place and costs in proportion to them, not to the file.
+///
+/// The file's result datasets are contiguous and allocated when it is created, so a checkpoint
+/// changes no HDF5 metadata: it is a few pwrite calls into space that already exists, data
+/// columns first, then (after fdatasync) the `done` column. A kill at any instant therefore
+/// leaves a file that every reader opens, in which each cell with done != 0 holds its final
+/// values; --resume recomputes the rest, and the results are bitwise those of an uninterrupted
+/// run. (docs/hdf5.md says why this was chosen over a journal, SWMR and parallel HDF5.)
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "rocksweep/grid/sweep.hpp"
+#include "rocksweep/io/spectra_file.hpp"
+
+namespace rocksweep {
+
+/// What the checkpoints of a run cost, for the log line and /provenance.
+struct CheckpointStats {
+    std::size_t checkpoints = 0;
+    double seconds = 0.0;       ///< wall time spent writing and syncing
+    std::uint64_t cells = 0;    ///< cells written
+};
+
+class SpectraStream {
+public:
+    /// Without `resume`: builds a new file for `spec` at path + ".tmp" (a 0-byte-per-cell
+    /// skeleton: the storage is a hole until written) that replaces `path` at the first
+    /// checkpoint, so that `path` (say the previous file of an --overwrite) is untouched until
+    /// there is something to show. With `resume`: continues `path`, which must be a file for the
+    /// same sweep and settings (the checks and exceptions of read_spectra_results); a file
+    /// written whole by an older rocksweep or by merge is first rewritten in the streaming layout.
+    /// Throws InputError (bad file or scenario names), std::runtime_error("cannot write PATH:
+    /// ...") when the file cannot be written (e.g. a full disk: nothing is left behind).
+    SpectraStream(std::string path, const SweepSpec& spec, const IntegratorSettings& settings, Provenance prov,
+                  bool resume);
+    ~SpectraStream();  ///< removes path + ".tmp" if no checkpoint published it
+    SpectraStream(const SpectraStream&) = delete;
+    SpectraStream& operator=(const SpectraStream&) = delete;
+
+    /// Cells done (computed or inferred): in the file, plus those added since.
+    std::size_t done_count() const { return done_count_; }
+    /// Result dataset `name` (e.g. "done", "mu_required") of cells [first, first + count), as
+    /// the file holds it (cells added since the last checkpoint read 0), into `out`, an array
+    /// of the dataset's element type (docs/hdf5.md). Throws std::invalid_argument for an unknown
+    /// name, std::runtime_error on a read error.
+    void read_column(std::string_view name, std::size_t first, std::size_t count, void* out) const;
+    /// One scenario's `outcome` and `done` as the file holds them (cells_per_scenario each).
+    void read_outcomes(std::size_t scenario, std::uint8_t* outcome, std::uint8_t* done) const;
+
+    /// Takes finished cells [first, first + count) (any order, each cell once) until the next
+    /// checkpoint.
+    void add(std::size_t first, std::size_t count, const CellResult* cells);
+    /// Bytes held for the next checkpoint.
+    std::size_t pending_bytes() const { return pending_cells_.size() * (sizeof(CellResult) + sizeof(std::size_t)); }
+    /// Marks the cells of `scenario` whose `done_after` is cell_inferred and `done_before` is not
+    /// as inferred, with `outcome` (the other columns take the empty values NaN / 0), and writes
+    /// them now.
+    void add_inferred(std::size_t scenario, const std::uint8_t* outcome, const std::uint8_t* done_before,
+                      const std::uint8_t* done_after);
+
+    /// Writes the cells added since the last checkpoint and syncs them, then the root attribute
+    /// n_done; the first one also publishes the file under `path`. Throws std::runtime_error("cannot write PATH: ...").
+    void checkpoint();
+    /// A last checkpoint, then the root attributes n_done and complete and /provenance
+    /// (wall_s, ranks, checkpoint cost). Throws like checkpoint().
+    void finish(double wall_s);
+
+    const CheckpointStats& stats() const { return stats_; }
+    const std::string& path() const { return path_; }
+
+private:
+    struct Placement;  // where one dataset's bytes are
+    class Descriptor;  // the open file, for pread/pwrite
+    struct Run;        // cells of one scenario, contiguous
+
+    void create_skeleton(const SweepResults* whole);
+    void locate(const std::string& file);
+    void write_runs(const SweepResults& cells, const std::vector<Run>& runs);
+    void publish();
+    void count_done();
+    void update_counts(bool final, const double* wall_s);
+
+    std::string path_;
+    const SweepSpec& spec_;
+    const IntegratorSettings& settings_;
+    Provenance prov_;
+    std::vector<std::vector<Placement>> place_;  // [scenario][column]
+    std::unique_ptr<Descriptor> fd_;
+    bool published_ = false;
+    std::size_t done_count_ = 0;
+    std::vector<std::size_t> pending_index_;
+    std::vector<CellResult> pending_cells_;
+    CheckpointStats stats_;
+};
+
+}  // namespace rocksweep

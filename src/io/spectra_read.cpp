@@ -1,0 +1,159 @@
+// Reading a spectra file back: every check that makes it "the same sweep", then its columns.
+#include <algorithm>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "rocksweep/core/errors.hpp"
+#include "rocksweep/io/grid_layout.hpp"
+#include "rocksweep/io/hdf5.hpp"
+#include "rocksweep/io/spectra_file.hpp"
+#include "spectra_layout.hpp"
+
+namespace rocksweep {
+
+using namespace spectra_detail;
+
+namespace {
+
+// ---------------------------------------------------------------------------------------
+// Reading
+
+[[noreturn]] void mismatch(const std::string& path, const std::string& what) {
+    throw InputError("spectra file", path, "a file written for the same sweep (" + what + ")");
+}
+
+void compare_number(const std::string& path, const h5::Object& obj, const NamedNumber& n) {
+    const double in_file = h5::read_double_attribute(obj, n.name);
+    if (!same_number(in_file, n.value))
+        mismatch(path, obj.name() + " attribute " + n.name + " is " + format_number(in_file) +
+                           " in the file, " + format_number(n.value) + " in the config");
+}
+
+void compare_text(const std::string& path, const h5::Object& obj, const char* name,
+                  const std::string& expected) {
+    // A file from before --adaptive-law has no adaptive_law: it was computed with the paper's law.
+    const bool before_law = std::string_view(name) == "adaptive_law" && !obj.has_attribute(name);
+    const std::string in_file = before_law ? "paper" : h5::read_string_attribute(obj, name);
+    if (in_file != expected)
+        mismatch(path, obj.name() + " attribute " + name + " is '" + in_file + "' in the file, '" +
+                           expected + "' in the config");
+}
+
+void compare_setting(const std::string& path, const h5::File& f, const Setting& x) {
+    std::string in_file;
+    if (x.is_text) {
+        in_file = h5::read_string_attribute(f, x.attribute);
+        if (in_file == x.text) return;
+    } else {
+        const double value = h5::read_double_attribute(f, x.attribute);
+        if (value == x.number) return;
+        in_file = std::string(x.option) == "no-energy-stop" ? (value != 0.0 ? "not given" : "given") : format_number(value);
+    }
+    throw InputError(x.option, x.text,
+                     in_file + ", as " + path + " was computed with (--resume continues a file only with the settings "
+                               "that shaped its results)");
+}
+
+// Checks the shape of a result dataset and, given a column, reads it into its scenario's block.
+template <h5::Element T>
+void read_grid(const std::string& path, const h5::Group& g, const char* name, std::vector<T>* column,
+               std::size_t scenario, std::span<const GridAxis> axes) {
+    const std::vector<hsize_t> expected = grid_dims(axes);
+    if (!column) {
+        if (const std::vector<hsize_t> dims = g.open_dataset(name).dims(); dims != expected)
+            mismatch(path, g.name() + "/" + name + " is " + dims_text(dims) + ", the config needs " + dims_text(expected));
+        return;
+    }
+    const h5::ArrayN<T> a = h5::read_array<T>(g, name);
+    if (a.dims != expected)
+        mismatch(path, g.name() + "/" + name + " is " + dims_text(a.dims) + ", the config needs " +
+                           dims_text(expected));
+    std::copy(a.values.begin(), a.values.end(),
+              column->begin() + static_cast<std::ptrdiff_t>(scenario * a.values.size()));
+}
+
+void read_contents(const std::string& path, const h5::File& f, const SweepSpec& spec,
+                   const IntegratorSettings& settings, SweepResults* r) {
+    for (const NamedNumber& n : root_numbers(spec)) compare_number(path, f, n);
+    for (const Setting& x : result_settings(spec, settings)) compare_setting(path, f, x);
+
+    const h5::Group spectra = f.open_group("spectra");
+    std::vector<std::string> in_file = spectra.children();
+    std::vector<std::string> expected;
+    for (const Scenario& s : spec.scenarios) expected.push_back(s.name);
+    std::sort(expected.begin(), expected.end());
+    if (in_file != expected) {
+        auto join = [](const std::vector<std::string>& v) {
+            std::string s;
+            for (const auto& x : v) s += (s.empty() ? "" : ", ") + x;
+            return s.empty() ? std::string("none") : s;
+        };
+        mismatch(path, "scenarios in the file: " + join(in_file) + "; in the config: " + join(expected));
+    }
+
+    const std::vector<GridAxis> axes = grid_axes(spec);
+    if (r) r->resize(spec.cell_count());
+    auto col = [r](auto SweepResults::*m) { return r ? &(r->*m) : nullptr; };
+    for (std::size_t i = 0; i < spec.scenarios.size(); ++i) {
+        const Scenario& s = spec.scenarios[i];
+        const h5::Group g = spectra.open_group(s.name);
+        for (const NamedText& t : scenario_texts(s)) compare_text(path, g, t.name, t.value);
+        for (const NamedNumber& n : scenario_numbers(s)) compare_number(path, g, n);
+        if (const std::string diff = axes_difference(g, axes); !diff.empty()) mismatch(path, g.name() + ": " + diff);
+        read_grid(path, g, "outcome", col(&SweepResults::outcome), i, axes);
+        read_grid(path, g, "max_rotation", col(&SweepResults::max_rotation), i, axes);
+        read_grid(path, g, "impacts", col(&SweepResults::impacts), i, axes);
+        read_grid(path, g, "t_overturn", col(&SweepResults::t_overturn), i, axes);
+        read_grid(path, g, "peak_force_ratio", col(&SweepResults::peak_force_ratio), i, axes);
+        read_grid(path, g, "broken", col(&SweepResults::broken), i, axes);
+        read_grid(path, g, "impacts_total", col(&SweepResults::impacts_total), i, axes);
+        read_grid(path, g, "mu_required", col(&SweepResults::mu_required), i, axes);
+        read_grid(path, g, "pivot_uplift", col(&SweepResults::pivot_uplift), i, axes);
+        read_grid(path, g, "done", col(&SweepResults::done), i, axes);
+    }
+}
+
+}  // namespace
+
+SweepResults read_spectra_results(const std::string& path, const SweepSpec& spec,
+                                  const IntegratorSettings& settings) {
+    SweepResults r;
+    spectra_detail::open_checked(path, spec, settings, &r);
+    return r;
+}
+
+h5::File spectra_detail::open_checked(const std::string& path, const SweepSpec& spec,
+                                      const IntegratorSettings& settings, SweepResults* r) {
+    // What the file is, in the user's words, before any HDF5 detail.
+    auto not_spectra = [&](const std::string& what) {
+        return InputError("output", path, "a rocksweep spectra file to resume; it is " + what);
+    };
+    std::optional<h5::File> opened;  // the file, or a message about what it is
+    try {
+        opened.emplace(h5::File::open_read_only(path));
+    } catch (const Hdf5Error&) {
+        throw not_spectra("not an HDF5 file");
+    }
+    const h5::File& f = *opened;
+    if (f.exists("theta") && f.exists("t")) throw not_spectra("a history written by rocksweep simulate");
+    if (!f.has_attribute("format_version") || !f.exists("spectra"))
+        throw not_spectra("an HDF5 file that rocksweep sweep did not write");
+    if (const std::int64_t v = h5::read_int64_attribute(f, "format_version"); v != format_version)
+        throw InputError("output", path,
+                         "a spectra file of format version " + std::to_string(format_version) +
+                             " to resume; it is of version " + std::to_string(v) +
+                             (v < format_version ? " (an older layout, axes in /axes)" : " (a newer rocksweep's)") +
+                             ", which this rocksweep does not continue: sweep again with --overwrite");
+    try {
+        read_contents(path, f, spec, settings, r);
+        return std::move(*opened);
+    } catch (const Hdf5Error& e) {
+        // A missing attribute or dataset means this is not a file we wrote for this layout.
+        throw InputError("spectra file", path,
+                         std::string("a rocksweep spectra file (") + e.what() + ")");
+    }
+}
+
+}  // namespace rocksweep
