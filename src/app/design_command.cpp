@@ -4,7 +4,6 @@
 #include "rocksweep/app/design_command.hpp"
 
 #include <CLI/CLI.hpp>
-#include <mpi.h>
 
 #include <algorithm>
 #include <cmath>
@@ -222,19 +221,6 @@ DesignCurve curve_of(std::vector<Evaluation> e, bool with_theta_f, double near_o
     return c;
 }
 
-void broadcast(std::vector<double>& v, const MpiSession& mpi) {
-    if (mpi.size() == 1) return;
-    unsigned long long n = v.size();
-    MPI_Bcast(&n, 1, MPI_UNSIGNED_LONG_LONG, 0, mpi.comm());
-    v.resize(n);
-    if (n > 0) MPI_Bcast(v.data(), static_cast<int>(n), MPI_DOUBLE, 0, mpi.comm());
-}
-
-int broadcast(int x, const MpiSession& mpi) {
-    if (mpi.size() > 1) MPI_Bcast(&x, 1, MPI_INT, 0, mpi.comm());
-    return x;
-}
-
 /// Claims the design's output on rank 0 (the rounds claim their own files); an existing
 /// output is refused unless --resume or --overwrite says what to do with it.
 void claim_output(std::optional<OutputClaim>& claim, const SweepCommand& run) {
@@ -263,19 +249,11 @@ int run_design(const Options& opts, const DesignCommand& cmd, const std::string&
     RootStream log(mpi);
 
     std::optional<OutputClaim> claim;
-    int verdict = 0;
-    if (mpi.is_root()) {
-        try {
-            claim_output(claim, cmd.run);
-        } catch (const InputError& e) {
-            claim.reset();
-            verdict = 2;
-            log << "rocksweep: error: " << cli_message(e) << "\n";
-        }
-    }
-    if ((verdict = broadcast(verdict, mpi)) != 0) return verdict;
+    const OutputVerdict verdict = agree_on_output(
+        mpi, log, [&] { claim_output(claim, cmd.run); return false; }, [&] { claim.reset(); });
+    if (verdict != OutputVerdict::go) return exit_status(verdict);
 
-    const double t0 = MPI_Wtime();
+    const double t0 = MpiSession::wall_time();
     const BracketSearch by_k(problem.stiffness), by_rho(problem.kmin);
     RoundValues values{by_k.first_round(), by_rho.first_round()};
     Ledger ledger;
@@ -288,8 +266,8 @@ int run_design(const Options& opts, const DesignCommand& cmd, const std::string&
                 << " of K_min/K_max -> " << run.output << "\n";
         SuiteCommand suite = cmd.hazard;
         suite.run = run;
-        const int status =
-            broadcast(suite.suite.empty() ? run_sweep(round_opts, run, config_text, mpi) : run_suite(round_opts, suite, config_text, mpi), mpi);
+        int status = suite.suite.empty() ? run_sweep(round_opts, run, config_text, mpi) : run_suite(round_opts, suite, config_text, mpi);
+        mpi.broadcast(status);
         if (status != 0) {
             if (status != 2) log << "design stopped in round " << round << "; rerun it with --resume to continue\n";
             return mpi.is_root() ? status : 0;
@@ -300,8 +278,8 @@ int run_design(const Options& opts, const DesignCommand& cmd, const std::string&
             values.log_k = by_k.next_round(round + 1, Ledger::points(ledger.constant));
             values.log_rho = by_rho.next_round(round + 1, Ledger::points(ledger.adaptive));
         }
-        broadcast(values.log_k, mpi);
-        broadcast(values.log_rho, mpi);
+        mpi.broadcast(values.log_k);
+        mpi.broadcast(values.log_rho);
     }
     if (!mpi.is_root()) return 0;
 
@@ -324,7 +302,7 @@ int run_design(const Options& opts, const DesignCommand& cmd, const std::string&
         report.suite = SuiteHazard{cmd.hazard.suite, to_string(spec.measure), intensity_units(spec.measure), spec.intensity,
                                    spec.records.size()};
     }
-    const Provenance prov{ROCKSWEEP_VERSION, config_text, utc_now(), mpi.size(), MPI_Wtime() - t0};
+    const Provenance prov{ROCKSWEEP_VERSION, config_text, utc_now(), mpi.size(), MpiSession::wall_time() - t0};
     try {
         write_design(cmd.run.output, report, prov);
     } catch (const InputError& e) {  // the output's directory went away during the run

@@ -43,6 +43,14 @@ void MpiSession::broadcast(int& value) const {
     if (size_ > 1) MPI_Bcast(&value, 1, MPI_INT, 0, comm());
 }
 
+void MpiSession::broadcast(std::vector<double>& values) const {
+    if (size_ == 1) return;
+    unsigned long long n = values.size();
+    MPI_Bcast(&n, 1, MPI_UNSIGNED_LONG_LONG, 0, comm());
+    values.resize(n);
+    if (n > 0) MPI_Bcast(values.data(), static_cast<int>(n), MPI_DOUBLE, 0, comm());
+}
+
 double MpiSession::wall_time() noexcept { return MPI_Wtime(); }
 
 void MpiSession::abort(int code) const noexcept {

@@ -8,6 +8,7 @@
 #include <ostream>
 #include <streambuf>
 #include <string_view>
+#include <vector>
 
 namespace rocksweep {
 
@@ -35,6 +36,8 @@ public:
     MPI_Comm comm() const noexcept { return MPI_COMM_WORLD; }
     /// Rank 0's `value` on every rank (collective; nothing is sent on a job of one rank).
     void broadcast(int& value) const;
+    /// Rank 0's `values` (its length too) on every rank.
+    void broadcast(std::vector<double>& values) const;
     /// Seconds on a wall clock (MPI_Wtime): differences between two calls on one rank are meaningful.
     static double wall_time() noexcept;
     /// Ends every rank of the job with exit status `code` (MPI_Abort on MPI_COMM_WORLD).
