@@ -190,8 +190,8 @@ void read_result_columns(const h5::Group& g, std::span<const GridAxis> axes, Swe
     read_column(g, "done", axes, r.done, first, mismatch);
 }
 
-void write_provenance(const h5::File& f, const Provenance& prov, const IntegratorSettings& settings) {
-    const h5::Group g = f.create_group("provenance");
+h5::Group write_provenance(const h5::File& f, const Provenance& prov, const IntegratorSettings& settings) {
+    h5::Group g = f.create_group("provenance");
     h5::write_attribute(g, "version", prov.version);
     h5::write_attribute(g, "config", prov.config_text);
     h5::write_attribute(g, "method", to_string(settings.method));
@@ -200,6 +200,7 @@ void write_provenance(const h5::File& f, const Provenance& prov, const Integrato
     h5::write_attribute(g, "created_utc", prov.created_utc);
     h5::write_attribute(g, "ranks", prov.ranks);
     h5::write_attribute(g, "wall_s", prov.wall_s);
+    return g;
 }
 
 void write_progress(const h5::Object& obj, const SweepResults& r) {

@@ -61,8 +61,9 @@ void write_result_columns(const GridGroup& grid, const SweepResults& r, std::siz
 void read_result_columns(const h5::Group& g, std::span<const GridAxis> axes, SweepResults& r, std::size_t first,
                          const Mismatch& mismatch);
 
-/// /provenance: what produced the file (everything there may differ between two runs).
-void write_provenance(const h5::File& f, const Provenance& prov, const IntegratorSettings& settings);
+/// /provenance: what produced the file (everything there may differ between two runs); returns
+/// the group, for a writer's own additions.
+h5::Group write_provenance(const h5::File& f, const Provenance& prov, const IntegratorSettings& settings);
 
 /// Root attributes n_cells, n_done, complete.
 void write_progress(const h5::Object& obj, const SweepResults& r);

@@ -171,15 +171,7 @@ void write_scenario(const h5::Group& spectra, std::size_t index, const SweepSpec
 }
 
 void write_provenance(const h5::File& f, const Provenance& prov, const IntegratorSettings& settings) {
-    const h5::Group g = f.create_group("provenance");
-    h5::write_attribute(g, "version", prov.version);
-    h5::write_attribute(g, "config", prov.config_text);
-    h5::write_attribute(g, "method", to_string(settings.method));
-    h5::write_attribute(g, "steps_per_period", settings.steps_per_period);
-    h5::write_attribute(g, "paper_dt_s", settings.paper_dt_s);
-    h5::write_attribute(g, "created_utc", prov.created_utc);
-    h5::write_attribute(g, "ranks", prov.ranks);
-    h5::write_attribute(g, "wall_s", prov.wall_s);
+    const h5::Group g = io::write_provenance(f, prov, settings);
     // What saving cost the run (the streaming writer fills them in; see docs/hdf5.md).
     h5::write_attribute(g, "checkpoint_s", 0.0);
     h5::write_attribute(g, "checkpoints", std::int64_t{0});
