@@ -41,21 +41,6 @@ void compare_text(const std::string& path, const h5::Object& obj, const char* na
                            expected + "' in the config");
 }
 
-void compare_setting(const std::string& path, const h5::File& f, const Setting& x) {
-    std::string in_file;
-    if (x.is_text) {
-        in_file = h5::read_string_attribute(f, x.attribute);
-        if (in_file == x.text) return;
-    } else {
-        const double value = h5::read_double_attribute(f, x.attribute);
-        if (value == x.number) return;
-        in_file = std::string(x.option) == "no-energy-stop" ? (value != 0.0 ? "not given" : "given") : format_number(value);
-    }
-    throw InputError(x.option, x.text,
-                     in_file + ", as " + path + " was computed with (--resume continues a file only with the settings "
-                               "that shaped its results)");
-}
-
 // Checks the shape of a result dataset and, given a column, reads it into its scenario's block.
 template <h5::Element T>
 void read_grid(const std::string& path, const h5::Group& g, const char* name, std::vector<T>* column,
@@ -77,7 +62,7 @@ void read_grid(const std::string& path, const h5::Group& g, const char* name, st
 void read_contents(const std::string& path, const h5::File& f, const SweepSpec& spec,
                    const IntegratorSettings& settings, SweepResults* r) {
     for (const NamedNumber& n : root_numbers(spec)) compare_number(path, f, n);
-    for (const Setting& x : result_settings(spec, settings)) compare_setting(path, f, x);
+    io::compare_settings(path, f, result_settings(spec, settings));
 
     const h5::Group spectra = f.open_group("spectra");
     std::vector<std::string> in_file = spectra.children();
