@@ -2,7 +2,10 @@
 """The three products of a record-suite file (`rocksweep suite`, docs/suite.md), one panel per
 anchorage scenario unless said otherwise:
 
-    plot_suite.py IN.h5 -o OUT [--scenario NAME ...] [--radius R]
+    plot_suite.py IN.h5 -o OUT [--scenario NAME ...] [--radius R] [--alpha A]
+
+Every figure is drawn at one slenderness alpha (--alpha [rad], default the configured block's, or
+the nearest the file holds).
 
 OUT_overturning.png/.pdf  first overturning PGA [g] of each record against the block size R
                           (thin lines, one colour per record) and the suite median (thick);
@@ -71,13 +74,39 @@ def intensity_unit_words(S):
 
 
 def block_at(S, radius):
-    """The block of size R in words (2b, 2h, alpha, p scale with R at fixed alpha: p ~ R^-1/2)."""
-    a = S["attrs"]
-    k = radius / a["radius_m"] if a.get("radius_m") else None
-    if k is None:
+    """The block of size R at the figure's alpha in words: b = R sin alpha, h = R cos alpha, and
+    p ~ R^-1/2 (the mass distribution I0/(mR^2) is kept)."""
+    a, alpha = S["attrs"], S["alpha"]
+    if not a.get("radius_m"):
         return "R = {:g} m".format(radius)
+    k = radius / a["radius_m"]
     return "R = {:g} m: {}".format(radius, rsplot.block_words(
-        a["half_width_m"] * k, a["half_height_m"] * k, a.get("alpha_rad"), a["p_rad_s"] / math.sqrt(k)))
+        radius * math.sin(alpha), radius * math.cos(alpha), alpha, a["p_rad_s"] / math.sqrt(k)))
+
+
+def at_alpha(S, a):
+    """S with every array taken at slenderness S["alpha_rad"][a]: results [record, radius, level],
+    overturning [record, radius], fragility [state, radius(, level)], scale factors [record, level]."""
+    S = dict(S, alpha=float(S["alpha_rad"][a]))
+    rec = dict(S["records"])
+    for k in ("scale_factor", "pga_scaled_g"):
+        if k in rec:
+            rec[k] = rec[k][:, a]
+    S["records"] = rec
+    scenarios = {}
+    for name, sc in S["scenarios"].items():
+        sc = dict(sc)
+        for k in read_suite.RESULTS:
+            if k in sc:
+                sc[k] = sc[k][:, a]
+        if sc["overturning"] is not None:
+            sc["overturning"] = {k: (v[:, a] if k != "units" else v) for k, v in sc["overturning"].items()}
+        if sc["fragility"] is not None:
+            sc["fragility"] = {k: (v[:, a] if isinstance(v, np.ndarray) and v.ndim >= 3 else v)
+                               for k, v in sc["fragility"].items()}
+        scenarios[name] = sc
+    S["scenarios"] = scenarios
+    return S
 
 
 def suite_words(S):
@@ -189,7 +218,7 @@ def plot_overturning(S, names, out):
     legend_ax.legend(handles=handles, loc="center left", fontsize=8, frameon=False)
     fig.suptitle("Overturning acceleration of the record suite: first overturning PGA\n{}; {}".format(
         "block " + block_at(S, radii[0]) if len(radii) == 1 else "{} block sizes R = {:.3g} to {:.3g} m at α = {:.4g} rad".format(
-            len(radii), radii[0], radii[-1], S["attrs"]["alpha_rad"]), suite_words(S)), fontsize=11)
+            len(radii), radii[0], radii[-1], S["alpha"]), suite_words(S)), fontsize=11)
     return rsplot.save(fig, out)
 
 
@@ -293,15 +322,16 @@ def plot_fragility(S, names, j, out):
 # --------------------------------------------------------------------------- command line
 
 
-def radius_index(S, radius, p):
-    radii = S["radius_m"]
-    if radius is None:  # the configured block's own size, or the nearest to it
-        own = S["attrs"].get("radius_m")
-        return int(np.argmin(np.abs(radii - own))) if own else 0
-    j = int(np.argmin(np.abs(radii - radius)))
-    if not math.isclose(radii[j], radius, rel_tol=1e-6):
-        p.error("no block size R = {:g} m in the file; it holds {} m".format(
-            radius, ", ".join("{:g}".format(r) for r in radii)))
+def axis_index(S, axis, value, p, words, unit):
+    """Index of `value` on S[axis]; None: the configured block's own value, or the nearest."""
+    values = S[axis]
+    if value is None:
+        own = S["attrs"].get(axis)
+        return int(np.argmin(np.abs(values - own))) if own else 0
+    j = int(np.argmin(np.abs(values - value)))
+    if not math.isclose(values[j], value, rel_tol=1e-6):
+        p.error("no {} {:g} {} in the file; it holds {} {}".format(
+            words, value, unit, ", ".join("{:g}".format(r) for r in values), unit))
     return j
 
 
@@ -310,6 +340,8 @@ def main(argv):
     p.add_argument("--scenario", nargs="+", help="only these scenarios (default: all, in config order)")
     p.add_argument("--radius", type=float, metavar="R", help="block size R [m] of the IDA and fragility figures "
                                                               "(default: the one nearest the configured block's)")
+    p.add_argument("--alpha", type=float, metavar="A", help="slenderness alpha [rad] of every figure "
+                                                             "(default: the one nearest the configured block's)")
     args = p.parse_args(argv)
     path = args.inputs[0]
     try:
@@ -317,7 +349,8 @@ def main(argv):
     except read_suite.SuiteFileError as e:
         raise SystemExit("plot_suite.py: {}".format(e))
     names = list(S["scenarios"])
-    j = radius_index(S, args.radius, p)
+    j = axis_index(S, "radius_m", args.radius, p, "block size R =", "m")
+    S = at_alpha(S, axis_index(S, "alpha_rad", args.alpha, p, "slenderness alpha =", "rad"))
     stem = rsplot.output_stem(args.output)
     plot_ida(S, names, j, stem + "_ida")
     missing = [nm for nm in names if S["scenarios"][nm]["overturning"] is None

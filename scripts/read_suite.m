@@ -8,21 +8,24 @@ function S = read_suite(file, scenario)
 %     S.scenario_names     every scenario of the file, in config order (group names)
 %     S.scenario           the group name read; S.scenario_attrs its attributes (anchorage, ...)
 %     S.record_names       the record names in suite order (a column cell array)
-%     S.record             0, 1, ..., n_record-1;  S.radius_m [m];  S.intensity (the levels)
+%     S.record             0, 1, ..., n_record-1;  S.alpha_rad [rad];  S.radius_m [m];
+%                          S.intensity (the levels)
 %     S.outcome, S.max_rotation, S.impacts, S.impacts_total, S.t_overturn,
 %     S.peak_force_ratio, S.broken, S.mu_required, S.pivot_uplift, S.done
-%                          arrays (record, radius, level) of the file's types (uint8, int32,
-%                          double): S.outcome(i, j, k) is record i at S.radius_m(j) and level
-%                          S.intensity(k), the element [i-1, j-1, k-1] of h5py and numpy
+%                          arrays (record, alpha, radius, level) of the file's types (uint8,
+%                          int32, double): S.outcome(i, a, j, k) is record i at S.alpha_rad(a),
+%                          S.radius_m(j) and level S.intensity(k), the element
+%                          [i-1, a-1, j-1, k-1] of h5py and numpy
 %     S.records            per-record measures (pga_g, pgv_m_s, ..., [record]) and
-%                          scale_factor, pga_scaled_g [record, level]; S.records.metadata(i) the
+%                          scale_factor, pga_scaled_g [record, alpha, level]; S.records.metadata(i) the
 %                          attributes of record i (name, event, station, file, ...)
 %     S.units              the units attribute of each result array that has one
 %     S.overturning        [] unless the sweep is complete, else a struct of first_intensity,
-%                          first_pga_g, below_intensity, safe_above [record, radius]
+%                          first_pga_g, below_intensity, safe_above [record, alpha, radius]
 %     S.fragility          [] unless complete, else a struct with .states (cell array of names),
 %                          .rotation_ratios, fraction, fraction_lo, fraction_hi, exceed, total
-%                          [state, radius, level], median, beta, ..., fit_status [state, radius]
+%                          [state, alpha, radius, level], median, beta, ..., fit_status
+%                          [state, alpha, radius]
 %                          and .fit_status_names (cell array of the fit_status meanings)
 %
 %   Outcome codes: 0 safe, 1 overturned with impact, 2 without impact, 255 not converged.
@@ -31,7 +34,8 @@ function S = read_suite(file, scenario)
 %
 %   Example:
 %     S = read_suite('results/suite.h5', 'free');
-%     plot(S.radius_m, S.overturning.first_pga_g'); xlabel('R [m]'); ylabel('first overturning PGA [g]')
+%     plot(S.radius_m, squeeze(S.overturning.first_pga_g(:, 1, :))'); xlabel('R [m]');
+%     ylabel('first overturning PGA [g]')   % at the first alpha
 %
 %   Runs in MATLAB and in GNU Octave with the netcdf package, with ncinfo, ncread and ncreadatt
 %   only. Octave's ncinfo (netcdf package 1.0.16) cannot list the whole file: it fails with

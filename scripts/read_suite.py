@@ -6,25 +6,27 @@ As a module:
     import read_suite
     S = read_suite.load("results/suite.h5")
     S["attrs"]                        # root attributes (block, intensity_measure, complete, ...)
-    S["intensity"], S["radius_m"]     # the levels [S["intensity_units"]] and the block sizes R [m]
+    S["intensity"], S["alpha_rad"], S["radius_m"]   # the levels [S["intensity_units"]], the
+                                      # slenderness angles alpha [rad] and the block sizes R [m]
     S["records"]["names"]             # record names in suite order (index = the record axis)
-    S["records"]["pga_g"][i]          # per-record measures; ["scale_factor"][i, k] per level
+    S["records"]["pga_g"][i]          # per-record measures; ["scale_factor"][i, a, k] per alpha, level
     S["records"]["metadata"][name]    # {"event": ..., "station": ..., "file": ..., ...}
     sc = S["scenarios"]["free"]       # scenarios in config order
-    sc["outcome"][i, j, k]            # record i, radius_m[j], intensity[k]
+    sc["outcome"][i, a, j, k]         # record i, alpha_rad[a], radius_m[j], intensity[k]
     sc["overturning"]                 # None unless the sweep is complete, else
                                       #   {"first_intensity", "first_pga_g", "below_intensity",
-                                      #    "safe_above": [record, radius]}
+                                      #    "safe_above": [record, alpha, radius]}
     sc["fragility"]                   # None unless complete, else {"states": names,
-                                      #   "rotation_ratios", "fraction"[state, radius, level], ...,
-                                      #   "median", "beta", ... [state, radius],
+                                      #   "rotation_ratios", "fraction"[state, alpha, radius, level],
+                                      #   ..., "median", "beta", ... [state, alpha, radius],
                                       #   "fit_status" (codes), "fit_status_names" (str)}
 
     read_suite.to_xarray(path)        # {scenario: xarray.Dataset}, record names as a coordinate
     read_suite.fragility_curve(x, median, beta)   # Phi(ln(x / median) / beta)
 
 Strings come decoded (str), arrays as numpy arrays in the file's (C) index order, attributes
-as plain Python values. A file that is not a suite file raises SuiteFileError with one line
+as plain Python values. A file of format version 1 (written before the alpha_rad axis) reads
+with an alpha_rad axis of length 1, the configured block's alpha. A file that is not a suite file raises SuiteFileError with one line
 saying why.
 
 As a program:
@@ -91,10 +93,21 @@ def _group(g, names):
     return out
 
 
+def _one_alpha(arrays, names):
+    """A format-1 file (before the alpha_rad axis): its arrays get the axis, of length 1, after
+    their first, so that every file reads alike."""
+    for n in names:
+        if n in arrays:
+            arrays[n] = np.expand_dims(arrays[n], 1)
+    return arrays
+
+
 def _records(f):
     rec = f["records"]
     names = flag_meanings(rec["record"])
     out = _group(rec, PER_RECORD + ("scale_factor", "pga_scaled_g"))
+    if "alpha_rad" not in rec:
+        _one_alpha(out, ("scale_factor", "pga_scaled_g"))
     out["names"] = names
     out["intensity"] = rec["intensity"][()]
     out["metadata"] = {n: attributes(rec[n]) if n in rec else {} for n in names}
@@ -103,6 +116,8 @@ def _records(f):
 
 def _fragility(g):
     out = _group(g, FRAGILITY)
+    if "alpha_rad" not in g:
+        _one_alpha(out, FRAGILITY)
     out["states"] = flag_meanings(g["damage_state"])
     out["rotation_ratios"] = np.asarray(g["damage_state"].attrs["rotation_ratios"], dtype=float)
     meanings = flag_meanings(g["fit_status"]) if "flag_meanings" in g["fit_status"].attrs else FIT_STATUS
@@ -116,7 +131,14 @@ def _scenario(g):
     sc["attrs"] = attributes(g)
     for axis in ("radius_m", "intensity"):
         sc[axis] = g[axis][()]
+    if "alpha_rad" in g:
+        sc["alpha_rad"] = g["alpha_rad"][()]
+    else:
+        sc["alpha_rad"] = np.array([value(g.file.attrs["alpha_rad"])], dtype=float)
+        _one_alpha(sc, RESULTS)
     sc["overturning"] = _group(g["overturning"], OVERTURNING) if "overturning" in g else None
+    if sc["overturning"] is not None and "alpha_rad" not in g["overturning"]:
+        _one_alpha(sc["overturning"], OVERTURNING)
     sc["fragility"] = _fragility(g["fragility"]) if "fragility" in g else None
     return sc
 
@@ -141,6 +163,7 @@ def load(path, scenarios=None):
         out["intensity_units"] = out["attrs"].get("intensity_units", "")
         out["intensity_long_name"] = out["attrs"].get("intensity_long_name", "")
         out["scenarios"] = {n: _scenario(g) for n, g in groups if not scenarios or n in scenarios}
+        out["alpha_rad"] = next(iter(out["scenarios"].values()))["alpha_rad"]
     return out
 
 
@@ -179,42 +202,43 @@ def reached(outcome, max_rotation, rotation_ratio):
 def to_xarray(path):
     """{scenario: xarray.Dataset}: the scenario's result arrays and, when present, its
     overturning and fragility arrays and the per-record measures, over the coordinates record
-    (the names; record_index beside it), radius_m, intensity and damage_state (the state
+    (the names; record_index beside it), alpha_rad, radius_m, intensity and damage_state (the state
     names), each with its units; attributes = root attributes then the scenario's."""
     import xarray as xr
 
     S = load(path)
     rec = S["records"]
-    units = dict(radius_m="m", intensity=S["intensity_units"])
+    units = dict(intensity=S["intensity_units"])
     coords = {
         "record": ("record", np.array(rec["names"], dtype=object), {"long_name": "record"}),
         "record_index": ("record", np.arange(len(rec["names"])), {"long_name": "position in the suite"}),
-        "radius_m": ("radius_m", S["radius_m"], {"units": "m", "long_name": "block size R, same alpha"}),
+        "alpha_rad": ("alpha_rad", S["alpha_rad"], {"units": "rad", "long_name": "slenderness angle alpha"}),
+        "radius_m": ("radius_m", S["radius_m"], {"units": "m", "long_name": "block size R"}),
         "intensity": ("intensity", S["intensity"], {"units": units["intensity"],
                                                     "long_name": S["intensity_long_name"]}),
     }
-    dims_of = {3: ("record", "radius_m", "intensity"), 2: ("record", "radius_m")}
+    dims_of = {4: ("record", "alpha_rad", "radius_m", "intensity"), 3: ("record", "alpha_rad", "radius_m")}
     out = {}
     for name, sc in S["scenarios"].items():
         ds = xr.Dataset(coords=dict(coords))
         for k in RESULTS:
             if k in sc:
-                ds[k] = (dims_of[3], sc[k], _unit(sc["units"], k))
+                ds[k] = (dims_of[4], sc[k], _unit(sc["units"], k))
         for k in PER_RECORD:
             if k in rec:
                 ds[k] = (("record",), rec[k], _unit(rec["units"], k))
         for k in ("scale_factor", "pga_scaled_g"):
             if k in rec:
-                ds[k] = (("record", "intensity"), rec[k], _unit(rec["units"], k))
+                ds[k] = (("record", "alpha_rad", "intensity"), rec[k], _unit(rec["units"], k))
         ov = sc["overturning"]
         for k in OVERTURNING if ov else ():
-            ds[k] = (dims_of[2], ov[k], _unit(ov["units"], k))
+            ds[k] = (dims_of[3], ov[k], _unit(ov["units"], k))
         fr = sc["fragility"]
         if fr:
             ds = ds.assign_coords(damage_state=("damage_state", np.array(fr["states"], dtype=object)),
                                   rotation_ratio=("damage_state", fr["rotation_ratios"]))
             for k in FRAGILITY:
-                dims = ("damage_state", "radius_m", "intensity")[:fr[k].ndim]
+                dims = ("damage_state", "alpha_rad", "radius_m", "intensity")[:fr[k].ndim]
                 ds[k] = (dims, fr[k], _unit(fr["units"], k))
         ds.attrs.update({k: v for k, v in S["attrs"].items() if np.ndim(v) == 0})
         ds.attrs.update({k: v for k, v in sc["attrs"].items() if np.ndim(v) == 0})
@@ -236,9 +260,10 @@ def summary(S):
     iu = S["intensity_units"]
     lines = [
         "runs: {} done of {}{}".format(a.get("n_done"), a.get("n_cells"), "" if a.get("complete") == 1 else " (partial)"),
-        "grid: {} records x {} radii x {} levels of {} [{}] {:g} ... {:g}".format(
-            len(rec["names"]), len(S["radius_m"]), len(S["intensity"]), S["intensity_measure"], iu,
-            S["intensity"][0], S["intensity"][-1]),
+        "grid: {} records x {} alphas x {} radii x {} levels of {} [{}] {:g} ... {:g}".format(
+            len(rec["names"]), len(S["alpha_rad"]), len(S["radius_m"]), len(S["intensity"]), S["intensity_measure"],
+            iu, S["intensity"][0], S["intensity"][-1]),
+        "alphas [rad]: " + " ".join("{:g}".format(a) for a in S["alpha_rad"]),
         "radii [m]: " + " ".join("{:g}".format(r) for r in S["radius_m"]),
         "records: " + " ".join(rec["names"]),
     ]
@@ -252,9 +277,11 @@ def summary(S):
             lines.append("  no overturning/fragility groups (the sweep is not complete)")
             continue
         s = len(fr["states"]) - 1
-        for j, r in enumerate(S["radius_m"]):
-            lines.append("  R = {:g} m, {}: median {:.4g} [{}], beta {:.3g} ({})".format(
-                r, fr["states"][s], fr["median"][s, j], iu, fr["beta"][s, j], fr["fit_status_names"][s, j]))
+        for a, alpha in enumerate(S["alpha_rad"]):
+            for j, r in enumerate(S["radius_m"]):
+                lines.append("  alpha = {:g} rad, R = {:g} m, {}: median {:.4g} [{}], beta {:.3g} ({})".format(
+                    alpha, r, fr["states"][s], fr["median"][s, a, j], iu, fr["beta"][s, a, j],
+                    fr["fit_status_names"][s, a, j]))
     return "\n".join(lines)
 
 

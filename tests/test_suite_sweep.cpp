@@ -24,9 +24,9 @@ std::vector<Scenario> scenarios() {
             {"adaptive_rho0.1", adaptive_anchorage(kBlock, fu, kBlock.alpha_rad, 0.1), 1.0, 0.1}};
 }
 
-SuiteSpec shipped(IntensityMeasure m, std::vector<double> radii = {}) {
+SuiteSpec shipped(IntensityMeasure m, std::vector<double> radii = {}, std::vector<double> alphas = {}) {
     return make_suite_spec(ROCKSWEEP_CONFIGS_DIR "/records_suite.csv", kBlock, scenarios(), m, Axis{0.1, 0.9, 5},
-                           std::move(radii));
+                           std::move(radii), std::move(alphas));
 }
 
 double peak(const std::vector<double>& v) {
@@ -42,6 +42,7 @@ SuiteSpec synthetic(std::size_t n, std::size_t levels) {
     s.scenarios = {scenarios().front()};
     s.intensity = Axis{0.1, 0.1 * static_cast<double>(levels), levels};
     s.radii_m = {kBlock.radius_m};
+    s.alphas_rad = {kBlock.alpha_rad};
     for (std::size_t i = 0; i < n; ++i) {
         SuiteMember m;
         m.record.dt_s = 0.01;
@@ -55,29 +56,40 @@ SuiteSpec synthetic(std::size_t n, std::size_t levels) {
 }  // namespace
 
 TEST(SuiteSweep, EveryRecordIsScaledToTheLevelOfEachMeasure) {
+    // Two slendernesses: PGA / (g tan alpha) is reached on each block's own alpha.
+    const std::vector<double> alphas{0.1, kBlock.alpha_rad};
     for (const IntensityMeasure m : {IntensityMeasure::pga_g, IntensityMeasure::pgv_m_s, IntensityMeasure::pga_ratio}) {
-        const SuiteSpec spec = shipped(m);
+        const SuiteSpec spec = shipped(m, {}, alphas);
         ASSERT_EQ(spec.records.size(), 12u);
         for (std::size_t r = 0; r < spec.records.size(); ++r)
-            for (std::size_t l = 0; l < spec.intensity.points; ++l) {
-                const IntensityMeasures& im = spec.records[r].measures;
-                const double f = spec.scale_factor(r, l);
-                const double reached = m == IntensityMeasure::pga_g     ? f * im.pga_g
-                                       : m == IntensityMeasure::pgv_m_s ? f * im.pgv_m_s
-                                                                        : pga_over_g_tan_alpha(f * im.pga_g, kBlock.alpha_rad, kBlock.gravity);
-                EXPECT_NEAR(reached, spec.intensity.at(l), 1e-14 * spec.intensity.at(l)) << to_string(m) << " record " << r;
-            }
+            for (std::size_t a = 0; a < alphas.size(); ++a)
+                for (std::size_t l = 0; l < spec.intensity.points; ++l) {
+                    const IntensityMeasures& im = spec.records[r].measures;
+                    const double f = spec.scale_factor(r, a, l);
+                    const double reached = m == IntensityMeasure::pga_g     ? f * im.pga_g
+                                           : m == IntensityMeasure::pgv_m_s ? f * im.pgv_m_s
+                                                                            : pga_over_g_tan_alpha(f * im.pga_g, alphas[a], kBlock.gravity);
+                    EXPECT_NEAR(reached, spec.intensity.at(l), 1e-14 * spec.intensity.at(l)) << to_string(m) << " record " << r;
+                }
     }
     const SuiteSpec scale = shipped(IntensityMeasure::scale);
-    EXPECT_EQ(scale.scale_factor(3, 2), scale.intensity.at(2));
+    EXPECT_EQ(scale.scale_factor(3, 0, 2), scale.intensity.at(2));
 }
 
 TEST(SuiteSweep, ACellCarriesItsRecordScaledAtItsLevelOnItsBlock) {
-    const SuiteSpec spec = shipped(IntensityMeasure::pga_g, {0.5, 1.0, 2.0});
-    ASSERT_EQ(spec.cell_count(), 3u * 12u * 3u * 5u);
-    // scenario 1, record 4, radius 2, level 3: ((1 * 12 + 4) * 3 + 2) * 5 + 3
-    const CellModel c = spec.cell(((1 * 12 + 4) * 3 + 2) * 5 + 3);
-    const Block b = spec.block_of_radius(2.0);
+    const SuiteSpec spec = shipped(IntensityMeasure::pga_g, {0.5, 1.0, 2.0}, {0.15, kBlock.alpha_rad});
+    ASSERT_EQ(spec.cell_count(), 3u * 12u * 2u * 3u * 5u);
+    // scenario 1, record 4, alpha 1, radius 2, level 3: (((1 * 12 + 4) * 2 + 1) * 3 + 2) * 5 + 3
+    const std::size_t index = (((1 * 12 + 4) * 2 + 1) * 3 + 2) * 5 + 3;
+    const SuiteSpec::Coordinates at = spec.coordinates(index);
+    EXPECT_EQ(at.scenario, 1u);
+    EXPECT_EQ(at.record, 4u);
+    EXPECT_EQ(at.alpha, 1u);
+    EXPECT_EQ(at.radius, 2u);
+    EXPECT_EQ(at.level, 3u);
+    EXPECT_EQ(spec.index(at), index);
+    const CellModel c = spec.cell(index);
+    const Block b = spec.block_of(kBlock.alpha_rad, 2.0);
     EXPECT_DOUBLE_EQ(c.p(), b.p());
     EXPECT_DOUBLE_EQ(c.alpha, kBlock.alpha_rad);
     ASSERT_EQ(c.pulse.kind, PulseKind::record);
@@ -89,15 +101,39 @@ TEST(SuiteSweep, ACellCarriesItsRecordScaledAtItsLevelOnItsBlock) {
     EXPECT_NEAR(c.force_max * std::tan(c.break_max / 2), 1.0, 1e-12);
 }
 
+TEST(SuiteSweep, ASlendernessKeepsRDensityAndTheShareOfHousnersE) {
+    const SuiteSpec spec = shipped(IntensityMeasure::pga_ratio, {}, {0.1, kBlock.alpha_rad});
+    const Block b = spec.block_of(0.1, kBlock.radius_m);
+    // A rectangle of the same R and depth: b h = R^2 sin(2 alpha) / 2 sets the mass.
+    const Block rect = rectangular_block(kBlock.radius_m * std::sin(0.1), kBlock.radius_m * std::cos(0.1),
+                                         kBlock.mass_kg * std::sin(0.2) / std::sin(2 * kBlock.alpha_rad));
+    EXPECT_NEAR(b.mass_kg, rect.mass_kg, 1e-12 * rect.mass_kg);
+    EXPECT_NEAR(b.p(), rect.p(), 1e-12 * rect.p());  // same R: same p
+    EXPECT_NEAR(b.e, 1.0 - 1.5 * std::sin(0.1) * std::sin(0.1), 1e-15);  // Housner's, as the configured block's
+    // A cell on it: its own alpha, and PGA / (g tan alpha) at the level on that alpha.
+    const CellModel c = spec.cell(spec.index({0, 2, 0, 0, 4}));
+    EXPECT_DOUBLE_EQ(c.alpha, 0.1);
+    const double pga = peak(*c.pulse.record) * kBlock.gravity / standard_gravity;
+    EXPECT_NEAR(pga_over_g_tan_alpha(pga, 0.1, kBlock.gravity), spec.intensity.at(4), 1e-12);
+    // A restitution below Housner's keeps its fraction of it.
+    SuiteSpec damped = spec;
+    damped.block = rectangular_block(0.30, 1.36, 3361.0, 9.81, 0.5 * kBlock.e);
+    EXPECT_NEAR(damped.block_of(0.1, kBlock.radius_m).e, 0.5 * b.e, 1e-15);
+    // The configured slenderness and size: the configured block, bit for bit.
+    const Block same = spec.block_of(kBlock.alpha_rad, kBlock.radius_m);
+    EXPECT_EQ(same.mass_kg, kBlock.mass_kg);
+    EXPECT_EQ(same.e, kBlock.e);
+}
+
 TEST(SuiteSweep, ABlockSizeKeepsAlphaAndDensity) {
     const SuiteSpec spec = shipped(IntensityMeasure::pga_g);
-    const Block b = spec.block_of_radius(2.0 * kBlock.radius_m);
+    const Block b = spec.block_of(kBlock.alpha_rad, 2.0 * kBlock.radius_m);
     EXPECT_DOUBLE_EQ(b.alpha_rad, kBlock.alpha_rad);
     EXPECT_NEAR(b.mass_kg, 8.0 * kBlock.mass_kg, 1e-9 * kBlock.mass_kg);
     EXPECT_NEAR(b.p(), kBlock.p() / std::sqrt(2.0), 1e-12);
     EXPECT_EQ(b.e, kBlock.e);
     // The configured size is the configured block, bit for bit.
-    const Block same = spec.block_of_radius(kBlock.radius_m);
+    const Block same = spec.block_of(kBlock.alpha_rad, kBlock.radius_m);
     EXPECT_EQ(same.mass_kg, kBlock.mass_kg);
     EXPECT_EQ(same.p(), kBlock.p());
 }

@@ -42,9 +42,14 @@ CLI::App* add_suite_command(CLI::App& app, SuiteCommand& cmd) {
     add_suite_hazard_options(*s, cmd);
     s->get_option("--suite")->required();
     s->add_option("--radius-range", cmd.radius_range,
-                  "Block sizes R from LO to HI [m], at the block's alpha and density (default: the block's own R)")
+                  "Block sizes R from LO to HI [m], at the block's density (default: the block's own R)")
         ->expected(2)->check(number_in(1e-3, 1e3, "m"));
     s->add_option("--radius-points", cmd.radius_points, "Block sizes, evenly spaced, both ends included")
+        ->check(integer_in(1, 100000))->capture_default_str();
+    s->add_option("--alpha-range", cmd.alpha_range,
+                  "Slenderness angles alpha = atan(b/h) from LO to HI [rad], at each R (default: the block's own alpha)")
+        ->expected(2)->check(number_in(min_alpha_rad, M_PI / 2, "rad"));
+    s->add_option("--alpha-points", cmd.alpha_points, "Slenderness angles, evenly spaced, both ends included")
         ->check(integer_in(1, 100000))->capture_default_str();
     s->add_option("--damage-states", cmd.damage_states,
                   "Damage states theta_max / alpha >= each value, for the fragility curves (overturning is always one)")
@@ -60,15 +65,26 @@ void check_suite_options(const CLI::App& app, const std::vector<std::string>& ar
         throw InputError("refine", std::to_string(cmd.run.refine_stride), "0 for suite (refinement is for spectra maps)");
     if (cmd.radius_range.empty() && cmd.radius_points != 1)
         throw InputError("radius-points", std::to_string(cmd.radius_points), "1 without --radius-range (the block's own R)");
+    if (cmd.alpha_range.empty() && cmd.alpha_points != 1)
+        throw InputError("alpha-points", std::to_string(cmd.alpha_points), "1 without --alpha-range (the block's own alpha)");
 }
 
 SuiteSpec make_suite_spec(const Options& opts, const SuiteCommand& cmd) {
     const SweepSpec base = make_sweep_spec(opts);
     const Axis levels = make_axis("intensity", cmd.intensity_range, cmd.intensity_points);
-    std::vector<double> radii;
+    std::vector<double> radii, alphas;
     if (!cmd.radius_range.empty()) radii = make_axis("radius", cmd.radius_range, cmd.radius_points).values();
+    if (!cmd.alpha_range.empty()) {
+        alphas = make_axis("alpha", cmd.alpha_range, cmd.alpha_points).values();
+        // Every alpha must give a block that can rock: Housner's e = 1 - 2 sin^2(alpha) / (I0/(mR^2)) > 0.
+        const double ratio = base.block.inertia_ratio, squat = std::asin(std::sqrt(std::min(ratio / 2.0, 1.0)));
+        if (!(housner_e(alphas.back(), ratio) > 0.0))
+            throw InputError("alpha-range", format_short(cmd.alpha_range[0]) + " " + format_short(cmd.alpha_range[1]),
+                             "angles below " + format_short(squat, 4) + " rad, where Housner's e of this block's I0/(mR^2) = " +
+                                 format_short(ratio, 4) + " reaches 0 (the block is too squat to rock)");
+    }
     SuiteSpec spec = make_suite_spec(cmd.suite, base.block, base.scenarios,
-                                     parse_intensity_measure("intensity-measure", cmd.measure), levels, radii);
+                                     parse_intensity_measure("intensity-measure", cmd.measure), levels, radii, alphas);
     spec.equations = base.equations;
     spec.impact_threshold = base.impact_threshold;
     spec.friction = base.friction;
@@ -116,18 +132,23 @@ void prepare_output(Start& s, const Plan& plan, const SweepCommand& cmd, std::os
             << (s.complete ? "" : std::to_string(s.results.done_count()) + " of " + std::to_string(s.results.size()) + " cells already done\n");
 }
 
-/// One line per scenario: where the fragility of overturning lies, for the block size nearest
-/// the configured block's.
+std::size_t nearest(const std::vector<double>& axis, double x) {
+    std::size_t j = 0;
+    for (std::size_t k = 1; k < axis.size(); ++k)
+        if (std::abs(axis[k] - x) < std::abs(axis[j] - x)) j = k;
+    return j;
+}
+
+/// One line per scenario: where the fragility of overturning lies, for the block nearest the
+/// configured one.
 void summarise(const Plan& plan, const SweepResults& r, std::ostream& log) {
     const SuiteSpec& spec = plan.spec;
-    std::size_t j = 0;
-    for (std::size_t k = 1; k < spec.radii_m.size(); ++k)
-        if (std::abs(spec.radii_m[k] - spec.block.radius_m) < std::abs(spec.radii_m[j] - spec.block.radius_m)) j = k;
+    const std::size_t a = nearest(spec.alphas_rad, spec.block.alpha_rad), j = nearest(spec.radii_m, spec.block.radius_m);
     const char* units = spec.measure == IntensityMeasure::pga_g ? " g" : spec.measure == IntensityMeasure::pgv_m_s ? " m/s" : "";
-    log << std::setprecision(3) << "overturning fragility against " << intensity_long_name(spec.measure) << " (R = "
-        << spec.radii_m[j] << " m):\n";
+    log << std::setprecision(3) << "overturning fragility against " << intensity_long_name(spec.measure) << " (alpha = "
+        << spec.alphas_rad[a] << " rad, R = " << spec.radii_m[j] << " m):\n";
     for (std::size_t s = 0; s < spec.scenarios.size(); ++s) {
-        const FragilityFit fit = suite_fragility(spec, r, s, {plan.states.back()}).fits.at(j);
+        const FragilityFit fit = suite_fragility(spec, r, s, {plan.states.back()}).fits.at(a * spec.radii_m.size() + j);
         log << "  " << std::left << std::setw(22) << spec.scenarios[s].name << std::right;
         if (fit.status == FitStatus::ok)
             log << "median " << fit.curve.median << units << " (95 % " << fit.median_lo << " to " << fit.median_hi << "), beta "
@@ -191,8 +212,8 @@ int run_suite(const Options& opts, const SuiteCommand& cmd, const std::string& c
     const SinkFn sink = cell_results_sink(results, done_now);
 
     if (mpi.is_root() && !cmd.run.quiet)
-        log << "suite: " << spec.scenarios.size() << " scenarios x " << spec.records.size() << " records x " << spec.radii_m.size()
-            << " block sizes x " << spec.intensity.points << " levels = " << spec.cell_count() << " cells on " << mpi.size()
+        log << "suite: " << spec.scenarios.size() << " scenarios x " << spec.records.size() << " records x " << spec.alphas_rad.size()
+            << " slendernesses x " << spec.radii_m.size() << " block sizes x " << spec.intensity.points << " levels = " << spec.cell_count() << " cells on " << mpi.size()
             << " rank(s) -> " << cmd.run.output << "\n";
     scheduler->run(start.todo, so, compute, sink);
     progress.update(done_now);

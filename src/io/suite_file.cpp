@@ -13,7 +13,7 @@ namespace rocksweep {
 
 namespace {
 
-constexpr std::int64_t format_version = 1;
+constexpr std::int64_t format_version = 2;  // 2: the alpha_rad axis
 constexpr const char* kind = "suite";
 
 GridAxis record_axis(const SuiteSpec& spec) {
@@ -21,8 +21,11 @@ GridAxis record_axis(const SuiteSpec& spec) {
     for (std::size_t i = 0; i < index.size(); ++i) index[i] = static_cast<double>(i);
     return {"record", "1", "record (names: flag_meanings of /records/record)", index};
 }
+GridAxis alpha_axis(const SuiteSpec& spec) {
+    return {"alpha_rad", "rad", "slenderness angle alpha = atan(b/h) of the block", spec.alphas_rad};
+}
 GridAxis radius_axis(const SuiteSpec& spec) {
-    return {"radius_m", "m", "block size R (corner to centre of mass), same alpha", spec.radii_m};
+    return {"radius_m", "m", "block size R (corner to centre of mass)", spec.radii_m};
 }
 GridAxis intensity_axis(const SuiteSpec& spec) {
     return {"intensity", intensity_units(spec.measure), intensity_long_name(spec.measure), spec.intensity.values()};
@@ -48,12 +51,12 @@ std::set<std::string> records_datasets() {
 
 void write_records(const h5::File& f, const SuiteSpec& spec) {
     const h5::Group g = f.create_group("records");
-    const GridAxis axes[] = {record_axis(spec), intensity_axis(spec)};
+    const GridAxis axes[] = {record_axis(spec), alpha_axis(spec), intensity_axis(spec)};
     const GridGroup grid(g, axes);
     const h5::Dataset record = g.open_dataset("record");
     h5::write_attribute(record, "flag_values", std::span<const double>(axes[0].values));
     h5::write_attribute(record, "flag_meanings", record_names(spec));
-    const std::size_t n = spec.records.size(), levels = spec.intensity.points;
+    const std::size_t n = spec.records.size(), alphas = spec.alphas_rad.size(), levels = spec.intensity.points;
     for (const IntensityField& field : intensity_fields) {
         std::vector<double> v;
         for (const SuiteMember& m : spec.records) v.push_back(m.measures.*field.value);
@@ -61,12 +64,13 @@ void write_records(const h5::File& f, const SuiteSpec& spec) {
         h5::write_attribute(ds, "units", field.units);
         h5::write_attribute(ds, "long_name", field.long_name);
     }
-    std::vector<double> scale(n * levels), pga(n * levels);
+    std::vector<double> scale, pga;
     for (std::size_t r = 0; r < n; ++r)
-        for (std::size_t l = 0; l < levels; ++l) {
-            scale[r * levels + l] = spec.scale_factor(r, l);
-            pga[r * levels + l] = scale[r * levels + l] * spec.records[r].measures.pga_g;
-        }
+        for (std::size_t a = 0; a < alphas; ++a)
+            for (std::size_t l = 0; l < levels; ++l) {
+                scale.push_back(spec.scale_factor(r, a, l));
+                pga.push_back(scale.back() * spec.records[r].measures.pga_g);
+            }
     h5::write_attribute(grid.write<double>("scale_factor", scale), "long_name", "factor each record is multiplied by at each level");
     const h5::Dataset ds = grid.write<double>("pga_scaled_g", pga);
     h5::write_attribute(ds, "units", "1");
@@ -94,14 +98,14 @@ void write_measure_on(const GridGroup& grid, const char* name, const std::vector
 
 void write_overturning(const h5::Group& scenario, const SuiteSpec& spec, const OverturningSpectrum& o) {
     const h5::Group g = scenario.create_group("overturning");
-    const GridAxis axes[] = {record_axis(spec), radius_axis(spec)};
+    const GridAxis axes[] = {record_axis(spec), alpha_axis(spec), radius_axis(spec)};
     const GridGroup grid(g, axes);
     const char* units = intensity_units(spec.measure);
-    write_measure_on(grid, "first_intensity", o.first_intensity, {"record", "radius_m"}, units,
+    write_measure_on(grid, "first_intensity", o.first_intensity, {"record", "alpha_rad", "radius_m"}, units,
                      "lowest intensity level that overturns the block (NaN: none does)");
-    write_measure_on(grid, "first_pga_g", o.first_pga_g, {"record", "radius_m"}, "1",
+    write_measure_on(grid, "first_pga_g", o.first_pga_g, {"record", "alpha_rad", "radius_m"}, "1",
                      "PGA / standard gravity of the record at that level");
-    write_measure_on(grid, "below_intensity", o.below_intensity, {"record", "radius_m"}, units,
+    write_measure_on(grid, "below_intensity", o.below_intensity, {"record", "alpha_rad", "radius_m"}, units,
                      "the level before it, which does not overturn the block (NaN: none)");
     const h5::Dataset ds = grid.write<std::uint8_t>("safe_above", o.safe_above);
     const std::uint8_t flags[] = {0, 1};
@@ -119,8 +123,8 @@ void write_fragility(const h5::Group& scenario, const SuiteSpec& spec, const Sui
         ratios.push_back(fr.states[d].overturning ? NAN : fr.states[d].rotation_ratio);
         meanings += (meanings.empty() ? "" : " ") + fr.states[d].name();
     }
-    const GridAxis axes[] = {{"damage_state", "1", "damage state (names: its flag_meanings)", index}, radius_axis(spec),
-                             intensity_axis(spec)};
+    const GridAxis axes[] = {{"damage_state", "1", "damage state (names: its flag_meanings)", index}, alpha_axis(spec),
+                             radius_axis(spec), intensity_axis(spec)};
     const GridGroup grid(g, axes);
     const h5::Dataset state = g.open_dataset("damage_state");
     h5::write_attribute(state, "flag_values", std::span<const double>(index));
@@ -165,11 +169,11 @@ void write_fragility(const h5::Group& scenario, const SuiteSpec& spec, const Sui
     for (const FitColumn& c : columns) {
         std::vector<double> v;
         for (const FragilityFit& fit : fr.fits) v.push_back(c.get(fit));
-        write_measure_on(grid, c.name, v, {"damage_state", "radius_m"}, c.units, c.long_name);
+        write_measure_on(grid, c.name, v, {"damage_state", "alpha_rad", "radius_m"}, c.units, c.long_name);
     }
     std::vector<std::uint8_t> status;
     for (const FragilityFit& fit : fr.fits) status.push_back(static_cast<std::uint8_t>(fit.status));
-    const h5::Dataset ds = grid.write_on<std::uint8_t>("fit_status", status, {"damage_state", "radius_m"});
+    const h5::Dataset ds = grid.write_on<std::uint8_t>("fit_status", status, {"damage_state", "alpha_rad", "radius_m"});
     const std::uint8_t flags[] = {0, 1, 2, 3, 4, 5};
     h5::write_attribute(ds, "long_name", "how the lognormal fit ended (docs/fragility.md)");
     h5::write_attribute(ds, "flag_values", std::span<const std::uint8_t>(flags));
@@ -192,7 +196,7 @@ void write_contents(const h5::File& f, const SuiteSpec& spec, const SweepResults
     write_records(f, spec);
 
     const bool complete = r.done_count() == r.size();
-    const GridAxis axes[] = {record_axis(spec), radius_axis(spec), intensity_axis(spec)};
+    const GridAxis axes[] = {record_axis(spec), alpha_axis(spec), radius_axis(spec), intensity_axis(spec)};
     const h5::Group suite = f.create_group("suite");
     for (std::size_t s = 0; s < spec.scenarios.size(); ++s) {
         const h5::Group g = suite.create_group(spec.scenarios[s].name);
@@ -215,7 +219,7 @@ SweepResults read_contents(const std::string& path, const h5::File& f, const Sui
     io::compare_settings(path, f, io::numerics_settings(settings, spec.impact_threshold, spec.equations));
     io::compare_texts(f, root_texts(spec), mismatch);
     const h5::Group records = f.open_group("records");
-    const GridAxis record_axes[] = {record_axis(spec), intensity_axis(spec)};
+    const GridAxis record_axes[] = {record_axis(spec), alpha_axis(spec), intensity_axis(spec)};
     if (const std::string diff = axes_difference(records, record_axes); !diff.empty()) mismatch("/records: " + diff);
     // A record file edited since the run would give other results under the same name.
     const std::vector<double> pga = h5::read_1d<double>(records, "pga_g");
@@ -229,7 +233,7 @@ SweepResults read_contents(const std::string& path, const h5::File& f, const Sui
     for (const Scenario& s : spec.scenarios) expected.push_back(s.name);
     std::sort(expected.begin(), expected.end());
     if (suite.children() != expected) mismatch("its scenarios differ from the config's");
-    const GridAxis axes[] = {record_axis(spec), radius_axis(spec), intensity_axis(spec)};
+    const GridAxis axes[] = {record_axis(spec), alpha_axis(spec), radius_axis(spec), intensity_axis(spec)};
     SweepResults r;
     r.resize(spec.cell_count());
     for (std::size_t s = 0; s < spec.scenarios.size(); ++s) {

@@ -1,5 +1,6 @@
 #include "rocksweep/records/suite_sweep.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -54,32 +55,54 @@ std::string to_string(IntensityMeasure m) { return info(m).name; }
 const char* intensity_units(IntensityMeasure m) { return info(m).units; }
 const char* intensity_long_name(IntensityMeasure m) { return info(m).long_name; }
 
-Block SuiteSpec::block_of_radius(double radius_m) const {
-    if (radius_m == block.radius_m) return block;
+Block SuiteSpec::block_of(double alpha_rad, double radius_m) const {
+    if (alpha_rad == block.alpha_rad && radius_m == block.radius_m) return block;
+    // Same density and depth ∝ R: m ∝ R^3 at fixed shape, and ∝ b h = R^2 sin(2 alpha) / 2 at
+    // fixed R. The restitution keeps its fraction of Housner's value (1 for Housner's own).
     const double f = radius_m / block.radius_m;
-    return equivalent_block(radius_m, block.alpha_rad, block.inertia_ratio, block.mass_kg * f * f * f, block.gravity, block.e);
+    const double mass = block.mass_kg * f * f * f * std::sin(2.0 * alpha_rad) / std::sin(2.0 * block.alpha_rad);
+    const double eh = housner_e(alpha_rad, block.inertia_ratio);
+    const double e = alpha_rad == block.alpha_rad ? block.e : std::min(eh, block.e / block.housner_e() * eh);
+    return equivalent_block(radius_m, alpha_rad, block.inertia_ratio, mass, block.gravity, e);
 }
 
-double SuiteSpec::scale_factor(std::size_t r, std::size_t level) const {
+double SuiteSpec::scale_factor(std::size_t r, std::size_t alpha, std::size_t level) const {
     const double x = intensity.at(level);
     const IntensityMeasures& im = records.at(r).measures;
     switch (measure) {
         case IntensityMeasure::pga_g: return x / im.pga_g;
         case IntensityMeasure::pgv_m_s: return x / im.pgv_m_s;
-        case IntensityMeasure::pga_ratio: return x / pga_over_g_tan_alpha(im.pga_g, block.alpha_rad, block.gravity);
+        case IntensityMeasure::pga_ratio: return x / pga_over_g_tan_alpha(im.pga_g, alphas_rad.at(alpha), block.gravity);
         case IntensityMeasure::scale: return x;
     }
     return x;
 }
 
+SuiteSpec::Coordinates SuiteSpec::coordinates(std::size_t index) const {
+    Coordinates c;
+    c.level = index % intensity.points;
+    index /= intensity.points;
+    c.radius = index % radii_m.size();
+    index /= radii_m.size();
+    c.alpha = index % alphas_rad.size();
+    index /= alphas_rad.size();
+    c.record = index % records.size();
+    c.scenario = index / records.size();
+    return c;
+}
+
+std::size_t SuiteSpec::index(const Coordinates& c) const {
+    return (((c.scenario * records.size() + c.record) * alphas_rad.size() + c.alpha) * radii_m.size() + c.radius) *
+               intensity.points +
+           c.level;
+}
+
 CellModel SuiteSpec::cell(std::size_t index) const {
-    const std::size_t per = cells_per_scenario();
-    const Scenario& sc = scenarios.at(index / per);
-    const std::size_t in = index % per, levels = intensity.points;
-    const std::size_t level = in % levels, radius = (in / levels) % radii_m.size(), r = in / (levels * radii_m.size());
-    const Block b = block_of_radius(radii_m[radius]);
-    Pulse pulse = to_pulse(records[r].record, b.gravity);
-    const double f = scale_factor(r, level);
+    const Coordinates at = coordinates(index);
+    const Scenario& sc = scenarios.at(at.scenario);
+    const Block b = block_of(alphas_rad[at.alpha], radii_m[at.radius]);
+    Pulse pulse = to_pulse(records[at.record].record, b.gravity);
+    const double f = scale_factor(at.record, at.alpha, at.level);
     std::vector<double> scaled(*pulse.record);
     for (double& a : scaled) a *= f;
     pulse.record = std::make_shared<const std::vector<double>>(std::move(scaled));
@@ -87,7 +110,8 @@ CellModel SuiteSpec::cell(std::size_t index) const {
 }
 
 SuiteSpec make_suite_spec(const std::string& suite_path, const Block& block, std::vector<Scenario> scenarios,
-                          IntensityMeasure measure, Axis intensity, std::vector<double> radii_m) {
+                          IntensityMeasure measure, Axis intensity, std::vector<double> radii_m,
+                          std::vector<double> alphas_rad) {
     SuiteSpec spec;
     spec.block = block;
     spec.suite_path = suite_path;
@@ -109,7 +133,9 @@ SuiteSpec make_suite_spec(const std::string& suite_path, const Block& block, std
     spec.measure = measure;
     spec.intensity = intensity;
     if (radii_m.empty()) radii_m.push_back(block.radius_m);
+    if (alphas_rad.empty()) alphas_rad.push_back(block.alpha_rad);
     spec.radii_m = std::move(radii_m);
+    spec.alphas_rad = std::move(alphas_rad);
     spec.scenarios = std::move(scenarios);
     return spec;
 }

@@ -227,3 +227,9 @@ bad_input(suite_reversed_radii "--radius-range = 2 1 is invalid: LO <= HI"
           suite --config ${CFG} --suite ${SUITE} --radius-range 2 1 --radius-points 3 -o ${OUT})
 bad_input(suite_damage_state "--damage-states = -1 is invalid: out of range; allowed: a number in \\(0, 1000\\]"
           suite --config ${CFG} --suite ${SUITE} --damage-states -1 -o ${OUT})
+bad_input(suite_alpha_points "--alpha-points = 4 is invalid: 1 without --alpha-range"
+          suite --config ${CFG} --suite ${SUITE} --alpha-points 4 -o ${OUT})
+bad_input(suite_squat_alpha "--alpha-range = 0.5 1 is invalid: angles below 0.9553 rad, where Housner's e"
+          suite --config ${CFG} --suite ${SUITE} --alpha-range 0.5 1 --alpha-points 3 -o ${OUT})
+bad_input(suite_alpha_degrees "--alpha-range = 10 is invalid: out of range; allowed: a number in \\[0.0001, 1.5708\\] rad"
+          suite --config ${CFG} --suite ${SUITE} --alpha-range 10 20 --alpha-points 3 -o ${OUT})

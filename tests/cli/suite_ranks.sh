@@ -6,7 +6,8 @@ set -eu
 rs="$1"; cfg="$2"; suite="$3"; dir="$4"
 mkdir -p "$dir"
 args=(suite --config "$cfg" --suite "$suite" --anchorages free constant adaptive --theta-f-ratios 1 --kmin-ratios 0.1
-      --intensity-points 6 --radius-range 0.8 2.4 --radius-points 2 --quiet --overwrite)
+      --intensity-points 4 --radius-range 0.8 2.4 --radius-points 2 --alpha-range 0.15 0.25 --alpha-points 2
+      --quiet --overwrite)
 mpi=(mpirun --oversubscribe)
 [ "$(id -u)" -eq 0 ] && mpi+=(--allow-run-as-root)
 ref="$dir/ref.h5"

@@ -4,7 +4,7 @@ says, so that the readers and plot_suite.py can be developed and tested before t
 exists. The numbers are made up but behave like the physics:
 
 - 11 records (the shared suite's names and metadata), 20 levels of target PGA 0.05 ... 1.5 g,
-  radii 0.5, 1, 2 m at a fixed alpha, three anchorages free, constant_tf1, adaptive_rho0.1;
+  radii 0.5, 1, 2 m at one alpha (a slenderness axis of length 1), three anchorages free, constant_tf1, adaptive_rho0.1;
 - record i overturns at and above its capacity c = c_i sqrt(R / 1 m) k_anchorage [g]
   (c_i lognormal about 0.35 g, k = 1, 1.5, 2.2: adaptive best); below it theta_max/alpha rises
   as 0.9 (x/c)^2; far above it (x > 1.6 c) the block falls without an impact (mode 2);
@@ -110,6 +110,16 @@ def result(group, name, data, dims, dtype, units=None, long_name=None, extra=Non
     values.update(extra or {})
     attrs(ds, values)
     return ds
+
+
+def alpha_axis(group):
+    axis(group, "alpha_rad", np.array([ALPHA]), "rad", "slenderness angle alpha = atan(b/h) of the block")
+
+
+def on_alpha(group, name, values, dims, *args, **kwargs):
+    """`result` with the one-point alpha_rad axis inserted after the first dimension."""
+    return result(group, name, np.expand_dims(np.asarray(values), 1), dims[:1] + ["alpha_rad"] + dims[1:],
+                  *args, **kwargs)
 
 
 def record_axis(group, names):
@@ -231,7 +241,7 @@ def write(path, n_radii, partial, measure):
     r = math.hypot(b, h)
     with h5py.File(path, "w") as f:
         attrs(f, {
-            "title": "rocksweep record-suite sweep", "format_version": 1, "kind": "suite",
+            "title": "rocksweep record-suite sweep", "format_version": 2, "kind": "suite",
             "half_width_m": b, "half_height_m": h, "radius_m": r, "alpha_rad": ALPHA,
             "p_rad_s": math.sqrt(3 * G / (4 * r)), "e": 1 - 1.5 * math.sin(ALPHA) ** 2, "inertia_ratio": 4.0 / 3.0,
             "mass_kg": 500.0, "gravity_m_s2": G, "intensity_measure": measure, "intensity_units": units,
@@ -241,6 +251,7 @@ def write(path, n_radii, partial, measure):
         })
         rec = f.create_group("records")
         record_axis(rec, names)
+        alpha_axis(rec)
         axis(rec, "intensity", levels, units, long_name)
         per_record = {
             "pga_g": (pga, "1", "peak ground acceleration / standard gravity"),
@@ -255,8 +266,8 @@ def write(path, n_radii, partial, measure):
         }
         for name, (values, u, ln) in per_record.items():
             result(rec, name, values, ["record"], "<f8", u, ln)
-        result(rec, "scale_factor", scale, ["record", "intensity"], "<f8", "1", "factor the record is multiplied by")
-        result(rec, "pga_scaled_g", scale * pga[:, None], ["record", "intensity"], "<f8", "1",
+        on_alpha(rec, "scale_factor", scale, ["record", "intensity"], "<f8", "1", "factor the record is multiplied by")
+        on_alpha(rec, "pga_scaled_g", scale * pga[:, None], ["record", "intensity"], "<f8", "1",
                "peak ground acceleration of the scaled record / standard gravity")
         for name, file_, fmt, u, event, station, component in RECORDS:
             g = rec.create_group(name)
@@ -284,7 +295,8 @@ def write(path, n_radii, partial, measure):
 def write_scenario(g, names, radii, levels, units, long_name, factor, index, partial):
     dims = ["record", "radius_m", "intensity"]
     record_axis(g, names)
-    axis(g, "radius_m", radii, "m", "block size R (corner to centre of mass), same alpha")
+    alpha_axis(g)
+    axis(g, "radius_m", radii, "m", "block size R (corner to centre of mass)")
     axis(g, "intensity", levels, units, long_name)
     outcome, rot, t_over = runs(len(names), radii, factor, index)
     fell = (outcome == 1) | (outcome == 2)
@@ -294,39 +306,40 @@ def write_scenario(g, names, radii, levels, units, long_name, factor, index, par
         outcome[-1] = 0
         rot[-1] = np.nan
         t_over[-1] = np.nan
-    result(g, "outcome", outcome, dims, "u1", extra={
+    on_alpha(g, "outcome", outcome, dims, "u1", extra={
         "flag_values": np.array([0, 1, 2, 255], np.uint8), "flag_meanings": OUTCOME_MEANINGS})
-    result(g, "max_rotation", rot, dims, "<f8", "1", "maximum |theta| / alpha")
-    result(g, "impacts", np.where(outcome == 1, 3, 0), dims, "<i4", "1", "impacts above the settling threshold")
-    result(g, "impacts_total", np.where(outcome == 1, 4, 1), dims, "<i4", "1", "impacts, the settling one included")
-    result(g, "t_overturn", t_over, dims, "<f8", "s", "time of overturning")
+    on_alpha(g, "max_rotation", rot, dims, "<f8", "1", "maximum |theta| / alpha")
+    on_alpha(g, "impacts", np.where(outcome == 1, 3, 0), dims, "<i4", "1", "impacts above the settling threshold")
+    on_alpha(g, "impacts_total", np.where(outcome == 1, 4, 1), dims, "<i4", "1", "impacts, the settling one included")
+    on_alpha(g, "t_overturn", t_over, dims, "<f8", "s", "time of overturning")
     free = g.attrs["anchorage"] == b"free"
     force = np.full(outcome.shape, np.nan) if free else np.minimum(np.nan_to_num(rot, nan=0.0), 1.0)
-    result(g, "peak_force_ratio", force, dims, "<f8", "1", "peak anchorage force / F_u")
+    on_alpha(g, "peak_force_ratio", force, dims, "<f8", "1", "peak anchorage force / F_u")
     broken = np.zeros(outcome.shape) if free else np.where(fell, 3, 0)
-    result(g, "broken", broken, dims, "u1", extra={"flag_masks": np.array([1, 2], np.uint8),
+    on_alpha(g, "broken", broken, dims, "u1", extra={"flag_masks": np.array([1, 2], np.uint8),
                                                    "flag_meanings": "left_spring_broken right_spring_broken"})
-    result(g, "mu_required", np.full(outcome.shape, 0.25), dims, "<f8", "1",
+    on_alpha(g, "mu_required", np.full(outcome.shape, 0.25), dims, "<f8", "1",
            "friction coefficient needed to rock without sliding")
-    result(g, "pivot_uplift", np.zeros(outcome.shape), dims, "u1")
-    result(g, "done", done, dims, "u1", extra={"flag_values": np.array([0, 1], np.uint8),
+    on_alpha(g, "pivot_uplift", np.zeros(outcome.shape), dims, "u1")
+    on_alpha(g, "done", done, dims, "u1", extra={"flag_values": np.array([0, 1], np.uint8),
                                                "flag_meanings": "pending computed"})
     if partial:
         return
     ov = g.create_group("overturning")
     record_axis(ov, names)
-    axis(ov, "radius_m", radii, "m", "block size R (corner to centre of mass), same alpha")
+    alpha_axis(ov)
+    axis(ov, "radius_m", radii, "m", "block size R (corner to centre of mass)")
     first, below, safe_above = first_overturning(outcome, levels)
     first_pga = np.full(first.shape, np.nan)
     for i in range(len(names)):
         for j in range(len(radii)):
             if np.isfinite(first[i, j]):
-                first_pga[i, j] = g.file["records/pga_scaled_g"][i, int(np.argmax(levels == first[i, j]))]
+                first_pga[i, j] = g.file["records/pga_scaled_g"][i, 0, int(np.argmax(levels == first[i, j]))]
     two = ["record", "radius_m"]
-    result(ov, "first_intensity", first, two, "<f8", units, "lowest level that overturns")
-    result(ov, "first_pga_g", first_pga, two, "<f8", "1", "PGA of the record at its first overturning level")
-    result(ov, "below_intensity", below, two, "<f8", units, "level before the first overturning one")
-    result(ov, "safe_above", safe_above, two, "u1", "1", "1: a higher level leaves the block standing")
+    on_alpha(ov, "first_intensity", first, two, "<f8", units, "lowest level that overturns")
+    on_alpha(ov, "first_pga_g", first_pga, two, "<f8", "1", "PGA of the record at its first overturning level")
+    on_alpha(ov, "below_intensity", below, two, "<f8", units, "level before the first overturning one")
+    on_alpha(ov, "safe_above", safe_above, two, "u1", "1", "1: a higher level leaves the block standing")
     write_fragility(g.create_group("fragility"), outcome, rot, radii, levels, units, long_name)
 
 
@@ -337,7 +350,8 @@ def write_fragility(fr, outcome, rot, radii, levels, units, long_name):
         "flag_values": np.arange(n_state, dtype=np.int64),
         "flag_meanings": " ".join(["rotation>={:g}".format(r) for r in ROTATION_RATIOS] + ["overturning"]),
         "rotation_ratios": np.array([np.nan if r is None else r for r in ratios])})
-    axis(fr, "radius_m", radii, "m", "block size R (corner to centre of mass), same alpha")
+    alpha_axis(fr)
+    axis(fr, "radius_m", radii, "m", "block size R (corner to centre of mass)")
     axis(fr, "intensity", levels, units, long_name)
     total = np.count_nonzero(outcome != 255, axis=0)                       # [radius, level]
     exceed = np.stack([np.count_nonzero(reached(outcome, rot, r), axis=0) for r in ratios])
@@ -345,11 +359,11 @@ def write_fragility(fr, outcome, rot, radii, levels, units, long_name):
     fraction = np.where(total > 0, exceed / np.maximum(total, 1), np.nan)
     lo, hi = wilson(exceed, total)
     three = ["damage_state", "radius_m", "intensity"]
-    result(fr, "fraction", fraction, three, "<f8", "1", "fraction of the records reaching the state")
-    result(fr, "fraction_lo", lo, three, "<f8", "1", "Wilson 95 % interval, lower end")
-    result(fr, "fraction_hi", hi, three, "<f8", "1", "Wilson 95 % interval, upper end")
-    result(fr, "exceed", exceed, three, "<i4", "1", "records reaching the state")
-    result(fr, "total", total, three, "<i4", "1", "records run (not-converged runs left out)")
+    on_alpha(fr, "fraction", fraction, three, "<f8", "1", "fraction of the records reaching the state")
+    on_alpha(fr, "fraction_lo", lo, three, "<f8", "1", "Wilson 95 % interval, lower end")
+    on_alpha(fr, "fraction_hi", hi, three, "<f8", "1", "Wilson 95 % interval, upper end")
+    on_alpha(fr, "exceed", exceed, three, "<i4", "1", "records reaching the state")
+    on_alpha(fr, "total", total, three, "<i4", "1", "records run (not-converged runs left out)")
     fits = {k: np.full((n_state, len(radii)), np.nan) for k in
             ("median", "beta", "median_lo", "median_hi", "beta_lo", "beta_hi", "se_ln_median", "se_beta")}
     status = np.zeros((n_state, len(radii)), np.uint8)
@@ -367,8 +381,8 @@ def write_fragility(fr, outcome, rot, radii, levels, units, long_name):
     two = ["damage_state", "radius_m"]
     for k, v in fits.items():
         u = units if k.startswith("median") else "1"
-        result(fr, k, v, two, "<f8", u, k.replace("_", " "))
-    result(fr, "fit_status", status, two, "u1", extra={
+        on_alpha(fr, k, v, two, "<f8", u, k.replace("_", " "))
+    on_alpha(fr, "fit_status", status, two, "u1", extra={
         "flag_values": np.arange(len(FIT_STATUS), dtype=np.uint8), "flag_meanings": " ".join(FIT_STATUS)})
 
 

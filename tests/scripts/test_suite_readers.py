@@ -58,16 +58,16 @@ def test_values(path):
     ov = free["overturning"]
     i = names.index("cape_mendocino_1992")
     # capacity 0.55 g sqrt(0.5): the first of the 20 levels 0.05 + k 1.45/19 g at or above 0.389 g is k = 5
-    check(math.isclose(ov["first_pga_g"][i, 0], 0.05 + 5 * 1.45 / 19, rel_tol=1e-12),
-          "first_pga_g of cape_mendocino_1992, free, R = 0.5 m is 0.4316 g ({:.6g})".format(ov["first_pga_g"][i, 0]))
-    check(math.isclose(ov["below_intensity"][i, 0], 0.05 + 4 * 1.45 / 19, rel_tol=1e-12), "its below_intensity")
-    check(ov["safe_above"][i, 0] == 1 and int(ov["safe_above"].sum()) == 1, "safe_above = 1 for it alone")
-    check(free["outcome"][names.index("cephalonia_2014_chv1_e"), 0, -1] == 255, "the not-converged run kept as 255")
+    check(math.isclose(ov["first_pga_g"][i, 0, 0], 0.05 + 5 * 1.45 / 19, rel_tol=1e-12),
+          "first_pga_g of cape_mendocino_1992, free, R = 0.5 m is 0.4316 g ({:.6g})".format(ov["first_pga_g"][i, 0, 0]))
+    check(math.isclose(ov["below_intensity"][i, 0, 0], 0.05 + 4 * 1.45 / 19, rel_tol=1e-12), "its below_intensity")
+    check(ov["safe_above"][i, 0, 0] == 1 and int(ov["safe_above"].sum()) == 1, "safe_above = 1 for it alone")
+    check(free["outcome"][names.index("cephalonia_2014_chv1_e"), 0, 0, -1] == 255, "the not-converged run kept as 255")
     adaptive = S["scenarios"]["adaptive_rho0.1"]
-    check(np.all(np.isnan(adaptive["overturning"]["first_pga_g"][:, 2])), "no 2 m block overturns when adaptive")
-    check(adaptive["fragility"]["fit_status_names"][-1, 2] == "none_reached", "so its overturning fit is none_reached")
-    check(np.isnan(read_suite.fragility_curve([0.5], adaptive["fragility"]["median"][-1, 2],
-                                              adaptive["fragility"]["beta"][-1, 2])).all(),
+    check(np.all(np.isnan(adaptive["overturning"]["first_pga_g"][:, 0, 2])), "no 2 m block overturns when adaptive")
+    check(adaptive["fragility"]["fit_status_names"][-1, 0, 2] == "none_reached", "so its overturning fit is none_reached")
+    check(np.isnan(read_suite.fragility_curve([0.5], adaptive["fragility"]["median"][-1, 0, 2],
+                                              adaptive["fragility"]["beta"][-1, 0, 2])).all(),
           "and it has no curve")
 
     for name, sc in S["scenarios"].items():
@@ -91,7 +91,7 @@ def test_values(path):
           and np.isnan(read_suite.fragility_curve([0.1], math.inf, math.nan)).all(),
           "fragility_curve: a zero-dispersion fit is a step at its median, an infinite median no curve")
     # overturning is most likely for small blocks and free ones: medians in that order
-    med = np.array([S["scenarios"][n]["fragility"]["median"][-1, :2] for n in S["scenarios"]])
+    med = np.array([S["scenarios"][n]["fragility"]["median"][-1, 0, :2] for n in S["scenarios"]])
     check(np.all(np.diff(med, axis=0) > 0) and np.all(np.diff(med, axis=1) > 0),
           "overturning medians rise with anchorage (free < constant < adaptive) and with R")
 
@@ -110,7 +110,7 @@ names = {{{names}}};
 for k = 1:numel(names)
     S = read_suite('{path}', names{{k}});
     p = sprintf('s%d_', k);
-    for f = {{'record', 'radius_m', 'intensity', 'outcome', 'max_rotation', 'impacts', 't_overturn', 'broken', 'done'}}
+    for f = {{'record', 'alpha_rad', 'radius_m', 'intensity', 'outcome', 'max_rotation', 'impacts', 't_overturn', 'broken', 'done'}}
         X.([p f{{1}}]) = S.(f{{1}});
     end
     for f = fieldnames(S.overturning)'
@@ -159,7 +159,7 @@ def test_octave(path):
             g = f["suite"][name]
             p = "s{}_".format(k)
             bad = []
-            for ds in ("record", "radius_m", "intensity", "outcome", "max_rotation", "impacts", "t_overturn",
+            for ds in ("record", "alpha_rad", "radius_m", "intensity", "outcome", "max_rotation", "impacts", "t_overturn",
                        "broken", "done"):
                 h5 = g[ds][()]
                 m = M[p + ds]
@@ -193,7 +193,7 @@ def test_xarray(path):
                 warnings.simplefilter("ignore", RuntimeWarning)   # netCDF4's import warns about numpy's ABI
                 with xr.open_dataset(path, group="suite/" + name, engine=engine) as ds, \
                         xr.open_dataset(path, group="suite/{}/fragility".format(name), engine=engine) as fr:
-                    ok = (ds.outcome.dims == ("record", "radius_m", "intensity")
+                    ok = (ds.outcome.dims == ("record", "alpha_rad", "radius_m", "intensity")
                           and same(ds.outcome.values, sc["outcome"]) and same(ds.t_overturn.values, sc["t_overturn"])
                           and ds.radius_m.attrs["units"] == "m" and ds.attrs["anchorage"] == sc["attrs"]["anchorage"]
                           and same(fr["median"].values, sc["fragility"]["median"])
@@ -201,9 +201,9 @@ def test_xarray(path):
             check(ok, "xarray.open_dataset(group='suite/{}', engine='{}'): same arrays and axes".format(name, engine))
     D = read_suite.to_xarray(path)
     free = D["free"]
-    check(math.isclose(float(free.first_pga_g.sel(record="cape_mendocino_1992", radius_m=0.5)), 0.05 + 5 * 1.45 / 19),
+    check(math.isclose(float(free.first_pga_g.isel(alpha_rad=0).sel(record="cape_mendocino_1992", radius_m=0.5)), 0.05 + 5 * 1.45 / 19),
           "to_xarray: select by record name")
-    check(float(free.fraction.sel(damage_state="overturning", radius_m=1.0).isel(intensity=-1)) == 1.0
+    check(float(free.fraction.sel(damage_state="overturning", radius_m=1.0).isel(alpha_rad=0, intensity=-1)) == 1.0
           and free.intensity.attrs["units"] == "1", "to_xarray: damage_state names as a coordinate, units kept")
 
 

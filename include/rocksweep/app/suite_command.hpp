@@ -21,6 +21,8 @@ struct SuiteCommand {
     std::size_t intensity_points = 30;
     std::vector<double> radius_range;  ///< empty: the block's own R
     std::size_t radius_points = 1;
+    std::vector<double> alpha_range;  ///< empty: the block's own alpha
+    std::size_t alpha_points = 1;
     std::vector<double> damage_states{0.1, 0.3, 0.5};  ///< theta_max / alpha; overturning is always added
 };
 

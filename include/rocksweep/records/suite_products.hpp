@@ -13,7 +13,7 @@
 
 namespace rocksweep {
 
-/// Per record and block size, [record, radius] in C order. Overturning is not monotonic in the
+/// Per record and block, [record, alpha, radius] in C order. Overturning is not monotonic in the
 /// scale: `safe_above` says whether a level above the first overturning one leaves the block up.
 struct OverturningSpectrum {
     std::vector<double> first_intensity;  ///< lowest level that overturns; NaN if none does
@@ -25,12 +25,12 @@ struct OverturningSpectrum {
 /// Of scenario `s` of a complete sweep (`r` holds spec.cell_count() cells).
 OverturningSpectrum overturning_spectrum(const SuiteSpec& spec, const SweepResults& r, std::size_t s);
 
-/// Per damage state, block size and level: the stripes over the records, and a lognormal fit
-/// per state and size.
+/// Per damage state, block (alpha, size) and level: the stripes over the records, and a
+/// lognormal fit per state and block.
 struct SuiteFragility {
     std::vector<DamageState> states;
-    std::vector<std::int32_t> exceed, total;  ///< [state, radius, level]: runs reaching it, converged runs
-    std::vector<FragilityFit> fits;           ///< [state, radius]
+    std::vector<std::int32_t> exceed, total;  ///< [state, alpha, radius, level]: runs reaching it, converged runs
+    std::vector<FragilityFit> fits;           ///< [state, alpha, radius]
 };
 
 /// Of scenario `s` of a complete sweep.

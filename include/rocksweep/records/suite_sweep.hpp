@@ -1,8 +1,8 @@
 #pragma once
-/// The work list of a sweep over a record suite: scenario x record x block size x intensity,
-/// one cell per index. Each record is scaled so that its intensity measure equals the level
-/// (Vamvatsikos & Cornell's IDA scaling), and the block is scaled at fixed slenderness and
-/// density (R, and m ∝ R³), so every cell depends only on its index.
+/// The work list of a sweep over a record suite: scenario x record x slenderness x block size x
+/// intensity, one cell per index. Each record is scaled so that its intensity measure equals the
+/// level (Vamvatsikos & Cornell's IDA scaling), and the block is reshaped at fixed density and
+/// mass distribution (docs/suite.md, "Blocks"), so every cell depends only on its index.
 #include <cstddef>
 #include <memory>
 #include <string>
@@ -47,24 +47,35 @@ struct SuiteSpec {
     std::vector<SuiteMember> records;
     IntensityMeasure measure = IntensityMeasure::pga_g;
     Axis intensity;               ///< levels of `measure`
-    std::vector<double> radii_m;  ///< block sizes R [m], at the block's alpha
+    std::vector<double> alphas_rad;  ///< slenderness angles alpha [rad]
+    std::vector<double> radii_m;     ///< block sizes R [m]
     std::vector<Scenario> scenarios;  ///< anchorages of the configured block, scaled with it
 
-    std::size_t cells_per_scenario() const { return records.size() * radii_m.size() * intensity.points; }
+    std::size_t cells_per_scenario() const { return records.size() * alphas_rad.size() * radii_m.size() * intensity.points; }
     std::size_t cell_count() const { return cells_per_scenario() * scenarios.size(); }
-    /// index = ((scenario * n_record + record) * n_radius + radius) * n_level + level.
+    /// Where cell `index` sits on the axes, and back:
+    /// index = (((scenario * n_record + record) * n_alpha + alpha) * n_radius + radius) * n_level + level.
+    struct Coordinates {
+        std::size_t scenario = 0, record = 0, alpha = 0, radius = 0, level = 0;
+    };
+    Coordinates coordinates(std::size_t index) const;
+    std::size_t index(const Coordinates& c) const;
     CellModel cell(std::size_t index) const;
-    /// The factor record `r` is multiplied by at intensity level `level` (size-independent:
-    /// alpha is fixed).
-    double scale_factor(std::size_t r, std::size_t level) const;
-    /// The configured block scaled to radius R, same alpha, I0/(mR^2), e and density.
-    Block block_of_radius(double radius_m) const;
+    /// The factor record `r` is multiplied by at intensity level `level` on blocks of slenderness
+    /// alphas_rad[alpha] (only PGA / (g tan alpha) depends on it).
+    double scale_factor(std::size_t r, std::size_t alpha, std::size_t level) const;
+    /// The configured block reshaped to slenderness alpha and size R: same density, depth ∝ R,
+    /// I0/(mR^2), and e as the same fraction of Housner's value. The configured alpha and R give
+    /// the configured block, bit for bit.
+    Block block_of(double alpha_rad, double radius_m) const;
 };
 
 /// Reads the suite file and every record in it (each record's own checks apply). `scenarios`
-/// are those of the configured block. Throws InputError naming the option or the suite line.
+/// are those of the configured block; empty `alphas_rad` or `radii_m` mean the block's own.
+/// Throws InputError naming the option or the suite line.
 SuiteSpec make_suite_spec(const std::string& suite_path, const Block& block, std::vector<Scenario> scenarios,
-                          IntensityMeasure measure, Axis intensity, std::vector<double> radii_m);
+                          IntensityMeasure measure, Axis intensity, std::vector<double> radii_m,
+                          std::vector<double> alphas_rad = {});
 
 /// Computes cells [first, first + count) of `spec` into `out`.
 void compute_suite_cells(const SuiteSpec& spec, const IntegratorSettings& settings, std::size_t first,
