@@ -126,9 +126,22 @@ TEST(EventStepper, LocatesTheEarliestRootOfTheFunctionsItIsHanded) {
     const ToyEvents ev;  // y = cos t crosses 0 at pi/2
     const Accepted a = run_step(ev, 0.0, 2.5, [](double t, double& y, double& v) { Oscillator::step(t, y, v); });
     EXPECT_EQ(a.event, kernel::Event::impact);
-    EXPECT_NEAR(a.dt, M_PI / 2, 1e-12);
+    EXPECT_NEAR(a.dt, M_PI / 2, 1e-12 * M_PI / 2);  // the bracket's final width: 1e-12 of the root
     EXPECT_LE(a.y, 0.0);  // the accepted end is on the far side: the event has happened
     EXPECT_LT(a.trials, 40);
+}
+
+// A step of the size the kernel takes (0.05 of a period of 2 pi): the first re-run goes to the
+// root of the cubic Hermite interpolant, and a few more bracket it to 1e-12 of the step.
+TEST(EventStepper, AShortStepFindsItsRootInAFewReRuns) {
+    const double t0 = M_PI / 2 - 0.2;
+    ToyEvents ev;
+    Oscillator::step(t0, ev.y0, ev.v0);
+    const Accepted a = run_step(ev, t0, 0.3, [](double t, double& y, double& v) { Oscillator::step(t, y, v); });
+    EXPECT_EQ(a.event, kernel::Event::impact);
+    EXPECT_NEAR(t0 + a.dt, M_PI / 2, 4e-12 * 0.3);
+    EXPECT_LE(a.y, 0.0);
+    EXPECT_LE(a.trials, 6) << "1 whole step + the re-runs";
 }
 
 // A peak inside the step above the fracture level, with both ends below it: the stepper
