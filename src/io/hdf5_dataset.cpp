@@ -16,29 +16,9 @@ namespace rocksweep::h5 {
 
 using detail::fail;
 using detail::in_quotes;
+using detail::Types;
 
 namespace {
-
-template <Element T>
-struct Types;
-template <>
-struct Types<double> {
-    static hid_t memory() { return H5T_NATIVE_DOUBLE; }
-    static hid_t file() { return H5T_IEEE_F64LE; }
-    static constexpr const char* kind = "float64";
-};
-template <>
-struct Types<std::int32_t> {
-    static hid_t memory() { return H5T_NATIVE_INT32; }
-    static hid_t file() { return H5T_STD_I32LE; }
-    static constexpr const char* kind = "int32";
-};
-template <>
-struct Types<std::uint8_t> {
-    static hid_t memory() { return H5T_NATIVE_UINT8; }
-    static hid_t file() { return H5T_STD_U8LE; }
-    static constexpr const char* kind = "uint8";
-};
 
 // Reading converts silently in HDF5 (a float read as uint8 would wrap); refuse anything that
 // is not the same kind of number so a wrong file fails loudly.
