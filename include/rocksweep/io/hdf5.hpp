@@ -3,6 +3,11 @@
 /// checked, failures thrown as Hdf5Error carrying HDF5's own error text.
 ///
 /// Only rocksweep_io includes this header; the physics never sees HDF5.
+///
+/// One source file per concept, in src/io/: hdf5_error.cpp (check, silence_errors),
+/// hdf5_handle.cpp (Handle, Dataspace, Datatype, PropertyList), hdf5_object.cpp (Object,
+/// Location, Dataset), hdf5_file.cpp (File), hdf5_dataset.cpp, hdf5_inplace.cpp,
+/// hdf5_attribute.cpp, hdf5_scale.cpp and hdf5_publish.cpp (the sections below).
 #include <hdf5.h>
 
 #include <concepts>
@@ -195,7 +200,7 @@ private:
 };
 
 // ---------------------------------------------------------------------------------------
-// Datasets
+// Datasets (hdf5_dataset.cpp)
 
 /// Element types the helpers write and read, with their explicit little-endian file types:
 /// double -> H5T_IEEE_F64LE, int32 -> H5T_STD_I32LE, uint8 -> H5T_STD_U8LE.
@@ -281,7 +286,7 @@ void update_attribute(const Object& obj, std::string_view name, double value);
 void update_attribute(const Object& obj, std::string_view name, std::int64_t value);
 
 // ---------------------------------------------------------------------------------------
-// Attributes (scalar unless stated; an existing attribute of the same name is replaced)
+// Attributes (hdf5_attribute.cpp; scalar unless stated; an existing one of the same name is replaced)
 
 void write_attribute(const Object& obj, std::string_view name, double value);
 void write_attribute(const Object& obj, std::string_view name, std::int64_t value);
@@ -319,7 +324,7 @@ std::int64_t read_int64_attribute(const Object& obj, std::string_view name);
 std::string read_string_attribute(const Object& obj, std::string_view name);
 
 // ---------------------------------------------------------------------------------------
-// Dimension scales (H5DS, hdf5_hl)
+// Dimension scales (H5DS, hdf5_hl; hdf5_scale.cpp)
 
 /// Makes the 1-D dataset `scale` a dimension scale called `scale_name`.
 void make_scale(const Dataset& scale, std::string_view scale_name);
@@ -333,7 +338,7 @@ bool is_attached(const Dataset& data, const Dataset& scale, unsigned dim);
 void set_dimension_label(const Dataset& data, unsigned dim, std::string_view label);
 
 // ---------------------------------------------------------------------------------------
-// Publishing a file (not HDF5-specific; the CSV writer uses it too)
+// Publishing a file (not HDF5-specific; the CSV writer uses it too; hdf5_publish.cpp)
 
 /// Calls write(path + ".tmp") and, once it returns, renames the tmp file onto `path`, so a
 /// reader never sees a half-written `path`. If `write` throws, the tmp file is removed and

@@ -1,5 +1,6 @@
-// Round trips of the spectra and history files, and the promises of the HDF5 layer:
-// exact values back, scales attached, nothing partial left behind on failure.
+// Round trips of the spectra file: exact values back, axes as dimension scales, the layout
+// and attributes readers rely on, nothing partial left behind on failure. The HDF5 layer it is
+// built on has its own tests (test_hdf5_*.cpp).
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -21,7 +22,6 @@
 #include "rocksweep/physics/block.hpp"
 #include "rocksweep/core/errors.hpp"
 #include "rocksweep/io/hdf5.hpp"
-#include "rocksweep/io/history_file.hpp"
 #include "rocksweep/io/spectra_file.hpp"
 #include "spectra_test_support.hpp"
 #include "test_support.hpp"
@@ -336,120 +336,4 @@ TEST(SpectraFile, ResumeOfTheOldLayoutIsRefusedInOneLine) {
                         "version 1 (an older layout, axes in /axes), which this rocksweep does not continue: sweep "
                         "again with --overwrite");
     }
-}
-
-// ---------------------------------------------------------------------------------------
-// HDF5 layer
-
-TEST(Hdf5, ErrorsCarryHdf5Text) {
-    TempDir dir;
-    const std::string path = dir.file("absent.h5");
-    try {
-        h5::File::open_read_only(path);
-        FAIL() << "expected Hdf5Error";
-    } catch (const Hdf5Error& e) {
-        const std::string what = e.what();
-        EXPECT_NE(what.find(path), std::string::npos) << what;
-        EXPECT_NE(what.find("unable to open file"), std::string::npos) << what;
-    }
-}
-
-TEST(Hdf5, LargeDatasetsAreChunkedWithShuffleAndDeflate) {
-    TempDir dir;
-    const std::string path = dir.file("big.h5");
-    std::vector<double> big(300 * 200);
-    for (std::size_t i = 0; i < big.size(); ++i) big[i] = static_cast<double>(i % 17) * 0.5;
-    const std::vector<std::uint8_t> small = {1, 2, 3};
-    {
-        h5::File f = h5::File::create(path);
-        {
-            h5::write_2d<double>(f, "big", big, 300, 200);
-            h5::write_1d<std::uint8_t>(f, "small", small);
-        }
-        f.close();
-    }
-    const h5::File f = h5::File::open_read_only(path);
-    {
-        const h5::Dataset ds = f.open_dataset("big");
-        const h5::PropertyList dcpl(H5Dget_create_plist(ds.id()));
-        EXPECT_EQ(H5Pget_layout(dcpl.id()), H5D_CHUNKED);
-        ASSERT_EQ(H5Pget_nfilters(dcpl.id()), 2);
-        unsigned flags = 0;
-        std::size_t n = 0;
-        EXPECT_EQ(H5Pget_filter2(dcpl.id(), 0, &flags, &n, nullptr, 0, nullptr, nullptr), H5Z_FILTER_SHUFFLE);
-        unsigned level = 0;
-        n = 1;
-        EXPECT_EQ(H5Pget_filter2(dcpl.id(), 1, &flags, &n, &level, 0, nullptr, nullptr), H5Z_FILTER_DEFLATE);
-        EXPECT_EQ(level, 4u);
-        const h5::Dataset s = f.open_dataset("small");
-        const h5::PropertyList small_dcpl(H5Dget_create_plist(s.id()));
-        EXPECT_EQ(H5Pget_layout(small_dcpl.id()), H5D_CONTIGUOUS);
-    }
-    const h5::Array2<double> back = h5::read_2d<double>(f, "big");
-    EXPECT_EQ(back.rows, 300u);
-    EXPECT_EQ(back.cols, 200u);
-    EXPECT_EQ(back.values, big);
-    EXPECT_EQ(h5::read_1d<std::uint8_t>(f, "small"), small);
-    // Reading with the wrong element type fails rather than converting.
-    EXPECT_THROW(h5::read_1d<std::int32_t>(f, "small"), Hdf5Error);
-    EXPECT_THROW(h5::read_1d<double>(f, "big"), Hdf5Error);  // 2-D, not 1-D
-}
-
-TEST(Hdf5, AttributesRoundTripIncludingLongText) {
-    TempDir dir;
-    const std::string path = dir.file("attrs.h5");
-    // Larger than the 64 KiB an object header can hold: needs the 1.8 format's dense storage.
-    std::string long_text;
-    while (long_text.size() < 100'000) long_text += "key = \"value\" # comment\n";
-    {
-        h5::File f = h5::File::create(path);
-        h5::write_attribute(f, "x", 0.1);
-        h5::write_attribute(f, "n", std::int64_t{-42});
-        h5::write_attribute(f, "count", std::size_t{7});
-        h5::write_attribute(f, "empty", "");
-        h5::write_attribute(f, "utf8", "θ_f = α/2");
-        h5::write_attribute(f, "long", long_text);
-        h5::write_attribute(f, "x", 0.2);  // replaces
-        f.close();
-    }
-    const h5::File f = h5::File::open_read_only(path);
-    EXPECT_EQ(h5::read_double_attribute(f, "x"), 0.2);
-    EXPECT_EQ(h5::read_int64_attribute(f, "n"), -42);
-    EXPECT_EQ(h5::read_int64_attribute(f, "count"), 7);
-    EXPECT_EQ(h5::read_double_attribute(f, "count"), 7.0);
-    EXPECT_EQ(h5::read_string_attribute(f, "empty"), "");
-    EXPECT_EQ(h5::read_string_attribute(f, "utf8"), "θ_f = α/2");
-    EXPECT_EQ(h5::read_string_attribute(f, "long"), long_text);
-    // Stored without a terminator (netCDF would hand it to ncreadatt as a trailing char(0)):
-    // exactly the text's bytes, null-padded; "" as one byte of padding.
-    for (const auto& [name, bytes] : {std::pair<const char*, std::size_t>{"utf8", std::string("θ_f = α/2").size()},
-                                      {"empty", 1}}) {
-        const hid_t a = H5Aopen(f.id(), name, H5P_DEFAULT);
-        ASSERT_GE(a, 0);
-        const hid_t t = H5Aget_type(a);
-        EXPECT_EQ(H5Tget_size(t), bytes) << name;
-        EXPECT_EQ(H5Tget_strpad(t), H5T_STR_NULLPAD) << name;
-        EXPECT_EQ(H5Tis_variable_str(t), 0) << name;
-        H5Tclose(t);
-        H5Aclose(a);
-    }
-    EXPECT_THROW(h5::read_int64_attribute(f, "x"), Hdf5Error);
-    EXPECT_THROW(h5::read_double_attribute(f, "missing"), Hdf5Error);
-}
-
-TEST(Hdf5, CloseRefusesWhileObjectsAreOpen) {
-    TempDir dir;
-    {
-        h5::File f = h5::File::create(dir.file("open.h5"));
-        const h5::Group g = f.create_group("g");
-        try {
-            f.close();
-            ADD_FAILURE() << "expected Hdf5Error";
-        } catch (const Hdf5Error& e) {
-            EXPECT_NE(std::string(e.what()).find("open.h5"), std::string::npos) << e.what();
-        }
-    }
-    // The destructor closed the file once the group was gone: nothing is left open in this
-    // process (run as one binary, this also covers the tests before it).
-    EXPECT_EQ(H5Fget_obj_count(H5F_OBJ_ALL, H5F_OBJ_ALL), 0);
 }
