@@ -78,8 +78,10 @@ public:
                  double theta_dot) {
         const double phi = side * theta;
         // Past alpha the block is beyond its static stability limit: a fall to the ground needs
-        // ever more friction (f_y -> 0 as theta_dot grows) and says nothing about survival.
-        if (phi > m.alpha) return reset();
+        // ever more friction (f_y -> 0 as theta_dot grows) and says nothing about survival. A
+        // located event at alpha (a spring breaking at theta_f = alpha) lands a rounding past
+        // it: that state is still at alpha, and its demand counts.
+        if (phi > m.alpha * (1.0 + 1e-9)) return reset();
         // A spring that breaks or switches makes f_y jump: no parabola across the jump.
         const double kappa = springs.kappa(side);
         if (kappa != kappa_) reset();
