@@ -10,20 +10,15 @@
 #include "rocksweep/physics/energy.hpp"
 #include "rocksweep/physics/history.hpp"
 #include "rocksweep/physics/integrator.hpp"
+#include "smatteo_case.hpp"
 
 using namespace rocksweep;
 
 namespace {
 
-const Block kBlock = rectangular_block(0.30, 1.36, 3361.0);
-const double kStrength = 0.4 * 3361.0 * 9.81;
-
-Pulse sine(double omega_ratio, double amplitude_ratio) {
-    Pulse p;
-    p.omega = omega_ratio * kBlock.p();
-    p.ax_g = amplitude_ratio * kBlock.alpha_rad;
-    return p;
-}
+const Block& kBlock = rocksweep::testing::kSMatteo;
+const double kStrength = rocksweep::testing::kSMatteoStrength;
+Pulse sine(double omega_ratio, double amplitude_ratio) { return rocksweep::testing::smatteo_sine(omega_ratio, amplitude_ratio); }
 
 Anchorage anchorage(int kind) {
     switch (kind) {
