@@ -144,6 +144,24 @@ TEST(EventStepper, AShortStepFindsItsRootInAFewReRuns) {
     EXPECT_LE(a.trials, 6) << "1 whole step + the re-runs";
 }
 
+// theta computed as y0 + (a small increment) rounds to exactly 0 near an impact: a trial on
+// which the function is 0 is a root, and the search ends there instead of bisecting on to the
+// tolerance (regula falsi cannot move off an end whose value is 0). Here the motion rounds to a
+// grid of 1e-9, so a whole interval around the crossing reads 0.
+TEST(EventStepper, ATrialOnWhichTheFunctionIsZeroEndsTheSearch) {
+    const double t0 = M_PI / 2 - 0.2;
+    ToyEvents ev;
+    Oscillator::step(t0, ev.y0, ev.v0);
+    const Accepted a = run_step(ev, t0, 0.3, [](double t, double& y, double& v) {
+        Oscillator::step(t, y, v);
+        y = std::round(y * 1e9) / 1e9;
+    });
+    EXPECT_EQ(a.event, kernel::Event::impact);
+    EXPECT_EQ(a.y, 0.0);
+    EXPECT_NEAR(t0 + a.dt, M_PI / 2, 1e-9);
+    EXPECT_LE(a.trials, 8);
+}
+
 // A peak inside the step above the fracture level, with both ends below it: the stepper
 // locates the turning point, finds the fracture function <= 0 there and locates the fracture
 // in (0, peak].

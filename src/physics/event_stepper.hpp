@@ -99,7 +99,9 @@ public:
             if (probes_ == 1) stride_ = std::max(1.5 * std::abs(g / slope_), 1e-9 * hi_);
         }
         const double tol = std::max(4.0 * DBL_EPSILON * (std::abs(t0) + hi_), 1e-12 * hi_);
-        if (hi_ - lo_ <= tol || iterations_ >= 100) {
+        // A trial on which the function is exactly 0 (theta rounds to 0 at an impact) is the
+        // root itself: regula falsi could not move off it, and would bisect to the tolerance.
+        if (hi_ - lo_ <= tol || g_hi_ == 0.0 || iterations_ >= 100) {
             searching_ = false;
             const Event target = target_;
             target_ = Event::none;  // the next step looks for every event again
@@ -173,7 +175,7 @@ private:
     void guess(const Events& ev, double y0, double v0) {
         double lo = lo_, hi = hi_, glo = g_lo_, ghi = g_hi_;
         int moved = 0;
-        for (int i = 0; i < 60 && hi - lo > 1e-10 * hi_; ++i) {
+        for (int i = 0; i < 40 && hi - lo > 1e-7 * hi_; ++i) {
             double x = 0.5 * (lo + hi);
             if (!std::isnan(glo) && i % 4 != 3) {
                 const double xs = lo + (hi - lo) * glo / (glo - ghi);
