@@ -8,7 +8,9 @@ Every figure is drawn at one slenderness alpha (--alpha [rad], default the confi
 the nearest the file holds).
 
 OUT_overturning.png/.pdf  first overturning PGA [g] of each record against the block size R
-                          (thin lines, one colour per record) and the suite median (thick);
+                          (thin lines, one colour per record) and the suite median (thick), or
+                          against the slenderness alpha when the file holds several alphas and
+                          one R;
                           open markers: records that stand again at some higher level
                           (safe_above = 1); triangles at the top: records that never overturn.
                           With a single R: each record's first overturning PGA against its
@@ -167,10 +169,27 @@ def suite_median(first_pga):
     return np.where(np.isfinite(med), med, np.nan)
 
 
+def across_alpha(S):
+    """S for the overturning figure of a file with several alphas and one R: the overturning
+    arrays [record, alpha] take the place of [record, radius], and the x axis is alpha."""
+    S = dict(S, x_axis="alpha")
+    scenarios = {}
+    for name, sc in S["scenarios"].items():
+        sc = dict(sc)
+        if sc["overturning"] is not None:
+            sc["overturning"] = {k: (v[:, :, 0] if k != "units" else v) for k, v in sc["overturning"].items()}
+        scenarios[name] = sc
+    S["scenarios"] = scenarios
+    return S
+
+
 def plot_overturning(S, names, out):
-    radii = S["radius_m"]
+    slender = S.get("x_axis") == "alpha"
+    radii = S["alpha_rad"] if slender else S["radius_m"]
     recs = S["records"]["names"]
-    top = S["records"]["pga_scaled_g"][:, -1]
+    top = S["records"]["pga_scaled_g"][..., -1]
+    if top.ndim > 1:   # across alpha: the top level's PGA of each record, the largest over alpha
+        top = top.max(axis=1)
     fig, axes, legend_ax = panels(len(names), height=4.8 if len(radii) > 1 else 5.6)
     ymax = 1.1 * max(np.nanmax(top), 1e-9)
     for ax, name, title in zip(axes, names, scenario_titles(S, names)):
@@ -187,7 +206,7 @@ def plot_overturning(S, names, out):
             ax.plot(radii, med, color="k", lw=3.0, marker="o", ms=6, zorder=5)
             # Linear R with plain ticks: the sizes are evenly spaced, and their full digits would
             # run into each other; how many records never overturn is read off the triangles.
-            ax.set_xlabel("block size R [m]")
+            ax.set_xlabel(r"slenderness $\alpha$ = atan(b/h) [rad]" if slender else "block size R [m]")
         else:
             below = level_pga(S, ov["below_intensity"])[:, 0]
             x = np.arange(len(recs))
@@ -216,9 +235,15 @@ def plot_overturning(S, names, out):
     else:
         handles.insert(1, Line2D([], [], color="0.5", lw=4, alpha=0.45, label="PGA of the level below to the first"))
     legend_ax.legend(handles=handles, loc="center left", fontsize=8, frameon=False)
+    if slender:
+        where = "{} slendernesses α = {:.3g} to {:.3g} rad at R = {:.4g} m".format(
+            len(radii), radii[0], radii[-1], S["radius_m"][0])
+    elif len(radii) == 1:
+        where = "block " + block_at(S, radii[0])
+    else:
+        where = "{} block sizes R = {:.3g} to {:.3g} m at α = {:.4g} rad".format(len(radii), radii[0], radii[-1], S["alpha"])
     fig.suptitle("Overturning acceleration of the record suite: first overturning PGA\n{}; {}".format(
-        "block " + block_at(S, radii[0]) if len(radii) == 1 else "{} block sizes R = {:.3g} to {:.3g} m at α = {:.4g} rad".format(
-            len(radii), radii[0], radii[-1], S["alpha"]), suite_words(S)), fontsize=11)
+        where, suite_words(S)), fontsize=11)
     return rsplot.save(fig, out)
 
 
@@ -350,6 +375,7 @@ def main(argv):
         raise SystemExit("plot_suite.py: {}".format(e))
     names = list(S["scenarios"])
     j = axis_index(S, "radius_m", args.radius, p, "block size R =", "m")
+    full = S
     S = at_alpha(S, axis_index(S, "alpha_rad", args.alpha, p, "slenderness alpha =", "rad"))
     stem = rsplot.output_stem(args.output)
     plot_ida(S, names, j, stem + "_ida")
@@ -360,7 +386,8 @@ def main(argv):
                          "{} of {} runs): drew {}_ida only\n".format(path, ", ".join(missing), S["attrs"].get("n_done"),
                                                                      S["attrs"].get("n_cells"), stem))
         return 0
-    plot_overturning(S, names, stem + "_overturning")
+    plot_overturning(across_alpha(full) if len(full["alpha_rad"]) > 1 and len(full["radius_m"]) == 1 else S,
+                     names, stem + "_overturning")
     plot_fragility(S, names, j, stem + "_fragility")
     return 0
 

@@ -4,6 +4,9 @@
 # MPI ranks, and its three products (docs/suite.md):
 #   results/suite.h5                                      the runs, spectra and fragility fits
 #   results/suite_{overturning,ida,fragility}.png|pdf     the figures, the PNGs also in docs/figures/
+# and the same block's size at five slendernesses (configs/suite_slenderness.toml):
+#   results/suite_slenderness.h5, results/suite_slenderness_overturning.png|pdf (against alpha,
+#   also docs/figures/suite_slenderness.png)
 # Extra arguments go to rocksweep suite.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -15,4 +18,7 @@ $py scripts/plot_suite.py "$res/suite.h5" -o "$res/suite"
 for product in overturning ida fragility; do
   cp "$res/suite_$product.png" "docs/figures/suite_$product.png"
 done
-echo "suite: $res/suite.h5, $res/suite_{overturning,ida,fragility}.png"
+mpirun "${mpi_run[@]}" "$rs" suite --config configs/suite_slenderness.toml -o "$res/suite_slenderness.h5" --overwrite "$@"
+$py scripts/plot_suite.py "$res/suite_slenderness.h5" -o "$res/suite_slenderness"
+cp "$res/suite_slenderness_overturning.png" docs/figures/suite_slenderness.png
+echo "suite: $res/suite.h5, $res/suite_{overturning,ida,fragility}.png; $res/suite_slenderness.h5, $res/suite_slenderness_overturning.png"
