@@ -135,6 +135,19 @@ TEST(RecordVertical, AVerticalAtOrBelowMinusGIsRefusedAsFreeFall) {
               "sample (sample 1, t = 0.01 s, is -1 g: free fall, the block would leave the ground)");
 }
 
+TEST(RecordVertical, AVerticalScaledPastMinusGIsComputedAndFlaggedAsPivotUplift) {
+    // docs/physics.md: a suite level may scale an accepted vertical below -g; the cell runs the
+    // equation as written and says the model does not hold there (f_y <= 0).
+    const std::vector<double> ax = elcentro(0.2, 10.0);
+    const Pulse up = record_pulse(table(ax), table(std::vector<double>(ax.size(), -0.5)), 0.02);
+    Pulse past = up;
+    past.record_scale = 2.5;  // vertical -1.25 g
+    const CellResult fine = integrate_cell(make_cell_model(kBlock, free_anchorage(), up), {});
+    const CellResult flagged = integrate_cell(make_cell_model(kBlock, free_anchorage(), past), {});
+    EXPECT_EQ(fine.pivot_uplift, 0);
+    EXPECT_EQ(flagged.pivot_uplift, 1);
+}
+
 TEST(RecordVertical, LanesOfOneRecordAtManyScalesGiveTheSameBitsAloneAndInEveryBatchWidth) {
     // Cells as a suite orders them (one record, levels innermost), a second record, cells with
     // and without a vertical, all anchorages: whatever lanes a cell shares a batch with, and
