@@ -37,12 +37,14 @@ struct Recorded {
         const GroundLane c = lane_coefficients();
         const double t_end = end_time();
         auto ax_at = [&c](double tt) { return lane<false>(c, tt, 1.0).ax; };
+        double a0 = ax_at(t);  // each segment's start is the previous one's end, read once
         for (double t0 = t, t1 = next_kink(t); t0 < t_end; t0 = t1, t1 = next_kink(t1)) {
-            const double a0 = ax_at(t0), a1 = ax_at(std::min(t1, t_end));
+            const double a1 = ax_at(std::min(t1, t_end));
             if (a0 != 0.0 && (a1 == 0.0 || (a0 > 0.0) != (a1 > 0.0))) {
                 const double tz = t0 + (t1 - t0) * a0 / (a0 - a1);
                 if (tz > t) return tz;  // a zero that rounds onto t itself is the one just passed
             }
+            a0 = a1;
         }
         return INFINITY;
     }
