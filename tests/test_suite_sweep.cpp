@@ -29,12 +29,6 @@ SuiteSpec shipped(IntensityMeasure m, std::vector<double> radii = {}, std::vecto
                            std::move(radii), std::move(alphas));
 }
 
-double peak(const std::vector<double>& v) {
-    double m = 0.0;
-    for (double x : v) m = std::max(m, std::abs(x));
-    return m;
-}
-
 /// A suite of `n` one-sample-pair records of PGA 0.5 g, for products on made-up outcomes.
 SuiteSpec synthetic(std::size_t n, std::size_t levels) {
     SuiteSpec s;
@@ -94,7 +88,10 @@ TEST(SuiteSweep, ACellCarriesItsRecordScaledAtItsLevelOnItsBlock) {
     EXPECT_DOUBLE_EQ(c.alpha, kBlock.alpha_rad);
     ASSERT_EQ(c.pulse.kind, PulseKind::record);
     // The ground in units of the block's g has the level's PGA in standard g.
-    EXPECT_NEAR(peak(*c.pulse.record) * kBlock.gravity / standard_gravity, spec.intensity.at(3), 1e-12);
+    EXPECT_NEAR(c.pulse.peak_ax() * kBlock.gravity / standard_gravity, spec.intensity.at(3), 1e-12);
+    // Scaled per cell, not copied: every cell of the record shares its samples.
+    EXPECT_EQ(c.pulse.record.get(), spec.cell(spec.index({1, 4, 0, 0, 1})).pulse.record.get());
+    EXPECT_EQ(c.pulse.record_scale, spec.scale_factor(4, 1, 3));
     EXPECT_EQ(c.anchorage, AnchorageKind::constant);
     // Same theta_f / alpha and F_u / (m g) on the larger block: the force reaches F_u at theta_f.
     EXPECT_DOUBLE_EQ(c.break_max, kBlock.alpha_rad);
@@ -113,7 +110,7 @@ TEST(SuiteSweep, ASlendernessKeepsRDensityAndTheShareOfHousnersE) {
     // A cell on it: its own alpha, and PGA / (g tan alpha) at the level on that alpha.
     const CellModel c = spec.cell(spec.index({0, 2, 0, 0, 4}));
     EXPECT_DOUBLE_EQ(c.alpha, 0.1);
-    const double pga = peak(*c.pulse.record) * kBlock.gravity / standard_gravity;
+    const double pga = c.pulse.peak_ax() * kBlock.gravity / standard_gravity;
     EXPECT_NEAR(pga_over_g_tan_alpha(pga, 0.1, kBlock.gravity), spec.intensity.at(4), 1e-12);
     // A restitution below Housner's keeps its fraction of it.
     SuiteSpec damped = spec;
@@ -123,6 +120,37 @@ TEST(SuiteSweep, ASlendernessKeepsRDensityAndTheShareOfHousnersE) {
     const Block same = spec.block_of(kBlock.alpha_rad, kBlock.radius_m);
     EXPECT_EQ(same.mass_kg, kBlock.mass_kg);
     EXPECT_EQ(same.e, kBlock.e);
+}
+
+TEST(SuiteSweep, TheMexicoCityVerticalReachesTheCellScaledLikeItsHorizontal) {
+    // The shipped suite reads tests/data/mexico_city_1985_sct.txt's column 4 as the vertical
+    // (0.04 g at scale 1) of its two horizontal components: a cell carries it at the level's
+    // factor, and it changes the block's motion.
+    const SuiteSpec spec = shipped(IntensityMeasure::pga_g);
+    const std::size_t r = 10, level = 4;  // mexico_city_1985_sct_ns, 0.9 g
+    ASSERT_EQ(spec.records[r].entry.name, "mexico_city_1985_sct_ns");
+    const Pulse& one = spec.records[r].pulse;
+    ASSERT_TRUE(one.record_y);
+    EXPECT_NEAR(one.peak_ay() * kBlock.gravity / standard_gravity, 0.04, 0.005);
+    const CellModel c = spec.cell((0 * 12 + r) * 5 + level);  // free, the block's own size
+    const double f = spec.scale_factor(r, 0, level);
+    EXPECT_NEAR(f, 0.9 / spec.records[r].measures.pga_g, 1e-12 * f);
+    ASSERT_EQ(c.pulse.record_y.get(), one.record_y.get());
+    for (const double t : {10.0, 41.37, 60.01, 100.0}) {
+        EXPECT_EQ(c.pulse.ax(t), f * one.ax(t)) << t;
+        EXPECT_EQ(c.pulse.ay(t), f * one.ay(t)) << t;
+    }
+    EXPECT_EQ(c.pulse.peak_ay(), one.peak_ay() * f);
+    CellResult both, horizontal;
+    compute_suite_cells(spec, {}, (0 * 12 + r) * 5 + level, 1, &both);
+    CellModel h = c;
+    h.pulse.record_y = nullptr;
+    horizontal = integrate_cell(h, {});
+    EXPECT_GT(both.max_rotation, 0.05);  // it rocks under the three components (overturns at 0.9 g)
+    // ... and not as under the horizontal alone: where it falls, or how far it rocks
+    const bool fell = both.outcome != Outcome::safe;
+    EXPECT_NE(fell ? both.t_overturn_s : both.max_rotation, fell ? horizontal.t_overturn_s : horizontal.max_rotation);
+    EXPECT_TRUE(bitwise_equal(both, integrate_cell(c, {})));
 }
 
 TEST(SuiteSweep, ABlockSizeKeepsAlphaAndDensity) {

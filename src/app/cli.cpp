@@ -315,6 +315,12 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
     sim->add_option("--record-column", so.record_column,
                     "Column of the acceleration, counting the time column (default: 2 for time_accel, 1 for accel_only)")
         ->check(integer_in(1, 1000));
+    sim->add_option("--record-vertical", so.record_vertical,
+                    "The record's vertical component (upward positive): a second file in --record's format and unit "
+                    "(without it, --record-vertical-column reads a column of --record's file)")
+        ->check(existing_file("a ground-motion record"));
+    sim->add_option("--record-vertical-column", so.record_vertical_column,
+                    "Column of the vertical component, counting the time column")->check(integer_in(1, 1000));
     sim->add_option("--record-scale", so.record_scale, "Factor applied to the record")->check(number_in(-100, 100, none))->capture_default_str();
     sim->add_flag("-q,--quiet", sim_quiet, "Print nothing on success");
     sim->add_flag("--overwrite", sim_overwrite, "Replace an existing output file");

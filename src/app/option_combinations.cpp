@@ -104,7 +104,8 @@ void check_simulate(const Given& given, const Options& o) {
     const std::string a = "--anchorage " + s.anchorage;
     for (const char* opt : {"--pulse", "--omega-ratio", "--amplitude-ratio", "--duration", "--phase", "--vertical-amplitude", "--vertical-phase"})
         excludes(given, opt, "--record", "a recorded ground motion replaces the pulse");
-    for (const char* opt : {"--record-units", "--record-scale", "--record-format", "--record-dt", "--record-column"})
+    for (const char* opt : {"--record-units", "--record-scale", "--record-format", "--record-dt", "--record-column",
+                            "--record-vertical", "--record-vertical-column"})
         only_if(given, opt, given("--record"), "--record");
     const bool constant_pulse = s.pulse == "constant" && s.record.empty();
     for (const char* opt : {"--omega-ratio", "--phase", "--vertical-amplitude", "--vertical-phase"})

@@ -240,6 +240,8 @@ RecordSource record_source(const SingleOptions& s) {
     r.units = s.record_units;
     r.dt_s = s.record_dt_s;
     r.column = s.record_column;
+    if (!s.record_vertical.empty() || s.record_vertical_column != 0)
+        r.vertical = VerticalSource{s.record_vertical, s.record_vertical_column};
     r.scale = s.record_scale;
     return r;
 }

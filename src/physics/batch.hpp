@@ -30,8 +30,8 @@ struct RhsLane {
 
 inline LaneCoef coef(const RhsLane& l) { return rocking::coef(l.p2, l.alpha, l.kappa, l.side, l.linear); }
 
-/// A batch whose lanes are not all of one vectorised family (records, or a mix): each lane
-/// takes its own family's ground, outside the vector loop, with the same lane() as alone.
+/// A batch whose lanes are not all of one vectorised family, or hold different records: each
+/// lane takes its own family's ground, outside the vector loop, with the same lane() as alone.
 struct PerLane {};
 
 /// One classical RK4 step per lane; y = (theta, theta_dot). The lane loop is branch-free
@@ -46,17 +46,24 @@ struct Batch {
     struct Soa {
         alignas(64) double p2[W], alpha[W], kappa[W], side[W], linear[W], spring[W];
         alignas(64) double ax_g[W], ay_g[W], omega[W], phase[W], phase_y[W], t_ref[W];
+        alignas(64) double sample_dt[W];
+        alignas(64) int last_segment[W];
         alignas(64) double in0[W], inm[W], in1[W];
+        const double* samples = nullptr;    ///< a record's tables, one for the batch
+        const double* samples_y = nullptr;
     } k{};
 
     /// Batch-uniform shortcuts, which give the same bits per lane as the full computation:
     /// no lane in the pulse (every ground value +0), no lane with a vertical component (ay +0),
-    /// no lane with a spring (spring term +0).
+    /// no lane with a spring (spring term +0). Lanes of one record (any scales) share its tables.
     void step() {
         bool any_in = false, any_y = false, any_k = false, mixed = false;
-        const Pulse* first = nullptr;  // of the first lane that ever held a cell
+        int first_i = 0;  // the first lane that ever held a cell
         for (int i = W - 1; i >= 0; --i)
-            if (c[i].pulse) first = c[i].pulse;
+            if (c[i].pulse) first_i = i;
+        const Pulse* first = c[first_i].pulse;
+        k.samples = c[first_i].ground.samples;
+        k.samples_y = c[first_i].ground.samples_y;
         for (int i = 0; i < W; ++i) {
             const LaneCoef l = coef(c[i]);
             k.p2[i] = l.p2; k.alpha[i] = l.alpha; k.kappa[i] = l.kappa;
@@ -64,6 +71,7 @@ struct Batch {
             const GroundLane& g = c[i].ground;
             k.ax_g[i] = g.ax_g; k.ay_g[i] = g.ay_g; k.omega[i] = g.omega;
             k.phase[i] = g.phase; k.phase_y[i] = g.phase_y; k.t_ref[i] = g.t_ref;
+            k.sample_dt[i] = g.sample_dt_s; k.last_segment[i] = g.last_segment;
             const double h = dt[i], t = t0[i];
             k.in0[i] = t < c[i].t_cut ? 1.0 : 0.0;
             k.inm[i] = t + 0.5 * h < c[i].t_cut ? 1.0 : 0.0;
@@ -71,38 +79,34 @@ struct Batch {
             any_in |= t < c[i].t_cut;  // dt >= 0: the later stage times are not earlier
             any_y |= g.ay_g != 0.0;
             any_k |= c[i].kappa != 0.0;
-            mixed |= c[i].pulse && c[i].pulse->kind != first->kind;
+            mixed |= c[i].pulse &&
+                     (c[i].pulse->kind != first->kind || g.samples != k.samples || g.samples_y != k.samples_y);
         }
-        if (mixed) return lanes<PerLane, true, true, true>(*this);
+        if (mixed) return lanes<PerLane, true, true, true>(*this, nullptr, nullptr);
         visit(*first, [&](const auto& e) {
             using F = std::decay_t<decltype(e)>;
             if constexpr (F::vectorised) family<F>(any_in, any_in && any_y, any_k);
-            else lanes<PerLane, true, true, true>(*this);
+            else lanes<PerLane, true, true, true>(*this, nullptr, nullptr);
         });
     }
 
     template <class F>
     void family(bool in, bool y, bool spring) {
-        const int variant = (in ? 1 : 0) + (y ? 2 : 0) + (spring ? 4 : 0);
-        // Same operations either way (AVX2 without FMA, -ffp-contract=off): same bits.
-        if (use_avx2()) {
-            switch (variant) {
-                case 0: return lanes_avx2<F, false, false, false>(*this);
-                case 1: return lanes_avx2<F, true, false, false>(*this);
-                case 3: return lanes_avx2<F, true, true, false>(*this);
-                case 4: return lanes_avx2<F, false, false, true>(*this);
-                case 5: return lanes_avx2<F, true, false, true>(*this);
-                default: return lanes_avx2<F, true, true, true>(*this);
-            }
+        switch ((in ? 1 : 0) + (y ? 2 : 0) + (spring ? 4 : 0)) {
+            case 0: return run<F, false, false, false>();
+            case 1: return run<F, true, false, false>();
+            case 3: return run<F, true, true, false>();
+            case 4: return run<F, false, false, true>();
+            case 5: return run<F, true, false, true>();
+            default: return run<F, true, true, true>();
         }
-        switch (variant) {
-            case 0: return lanes<F, false, false, false>(*this);
-            case 1: return lanes<F, true, false, false>(*this);
-            case 3: return lanes<F, true, true, false>(*this);
-            case 4: return lanes<F, false, false, true>(*this);
-            case 5: return lanes<F, true, false, true>(*this);
-            default: return lanes<F, true, true, true>(*this);
-        }
+    }
+
+    /// Same operations either way (AVX2 without FMA, -ffp-contract=off): same bits.
+    template <class F, bool pulse, bool with_y, bool spring>
+    void run() {
+        if (use_avx2()) lanes_avx2<F, pulse, with_y, spring>(*this, k.samples, k.samples_y);
+        else lanes<F, pulse, with_y, spring>(*this, k.samples, k.samples_y);
     }
 
     static bool use_avx2() {
@@ -126,13 +130,19 @@ struct Batch {
         }
     }
 
+    // __restrict: the lanes' stores do not reach the tables a record's lanes gather from (passed
+    // apart: GCC does not carry restrict to a pointer loaded from the batch), so the loop
+    // vectorises with them (the same arithmetic, the same bits).
     template <class F, bool pulse, bool with_y, bool spring>
-    [[gnu::always_inline]] static inline void lanes_body(Batch& b) {
+    [[gnu::always_inline]] static inline void lanes_body(Batch& __restrict b, const double* __restrict samples,
+                                                         const double* __restrict samples_y) {
         for (int i = 0; i < W; ++i) {
             const LaneCoef l{b.k.p2[i], b.k.alpha[i], b.k.kappa[i], b.k.side[i], b.k.linear[i], b.k.spring[i]};
             GroundLane gl;
             gl.ax_g = b.k.ax_g[i]; gl.ay_g = b.k.ay_g[i]; gl.omega = b.k.omega[i];
             gl.phase = b.k.phase[i]; gl.phase_y = b.k.phase_y[i]; gl.t_ref = b.k.t_ref[i];
+            gl.sample_dt_s = b.k.sample_dt[i]; gl.last_segment = b.k.last_segment[i];
+            gl.samples = samples; gl.samples_y = samples_y;
             const double h = b.dt[i], t = b.t0[i], y = b.y0[i], v = b.v0[i];
             // The ground at t, t + h/2 (shared by k2 and k3) and t + h.
             Ground g0, gm, g1;
@@ -155,14 +165,21 @@ struct Batch {
         }
     }
     template <class F, bool pulse, bool with_y, bool spring>
-    static void lanes(Batch& b) { lanes_body<F, pulse, with_y, spring>(b); }
+    static void lanes(Batch& __restrict b, const double* __restrict xs, const double* __restrict ys) {
+        lanes_body<F, pulse, with_y, spring>(b, xs, ys);
+    }
     // The same loop compiled for AVX2 (no FMA: the bits stay those of the baseline build).
 #if defined(__x86_64__) || defined(__i386__)
     template <class F, bool pulse, bool with_y, bool spring>
-    __attribute__((target("avx2"))) static void lanes_avx2(Batch& b) { lanes_body<F, pulse, with_y, spring>(b); }
+    __attribute__((target("avx2"))) static void lanes_avx2(Batch& __restrict b, const double* __restrict xs,
+                                                           const double* __restrict ys) {
+        lanes_body<F, pulse, with_y, spring>(b, xs, ys);
+    }
 #else
     template <class F, bool pulse, bool with_y, bool spring>
-    static void lanes_avx2(Batch& b) { lanes_body<F, pulse, with_y, spring>(b); }
+    static void lanes_avx2(Batch& __restrict b, const double* __restrict xs, const double* __restrict ys) {
+        lanes_body<F, pulse, with_y, spring>(b, xs, ys);
+    }
 #endif
 };
 

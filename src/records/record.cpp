@@ -256,13 +256,30 @@ Record read_record(const RecordSource& s) {
     return r;
 }
 
-Pulse to_pulse(const Record& r, double gravity) {
-    std::vector<double> a(r.ax_g);
+namespace {
+// Samples in standard g -> fractions of the block's g.
+std::shared_ptr<const std::vector<double>> in_block_g(const std::vector<double>& a_g, double gravity) {
+    std::vector<double> a(a_g);
     for (double& x : a) x *= standard_gravity / gravity;
+    return std::make_shared<const std::vector<double>>(std::move(a));
+}
+}  // namespace
+
+Pulse to_pulse(const Record& r, double gravity) {
     Pulse p;
     p.kind = PulseKind::record;
-    p.record = std::make_shared<const std::vector<double>>(std::move(a));
+    p.record = in_block_g(r.ax_g, gravity);
     p.record_dt_s = r.dt_s;
+    if (!r.ay_g.empty()) {
+        p.record_y = in_block_g(r.ay_g, gravity);
+        // g + a_v <= 0: the ground falls away from the block, which no longer rests on it.
+        for (std::size_t i = 0; i < p.record_y->size(); ++i)
+            if (!((*p.record_y)[i] > -1.0))
+                throw InputError("record-vertical", r.vertical_path,
+                                 "a vertical acceleration above -g at every sample (sample " + std::to_string(i) + ", t = " +
+                                     format_number(static_cast<double>(i) * r.dt_s) + " s, is " +
+                                     format_number((*p.record_y)[i]) + " g: free fall, the block would leave the ground)");
+    }
     return p;
 }
 

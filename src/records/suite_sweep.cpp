@@ -101,11 +101,10 @@ CellModel SuiteSpec::cell(std::size_t index) const {
     const Coordinates at = coordinates(index);
     const Scenario& sc = scenarios.at(at.scenario);
     const Block b = block_of(alphas_rad[at.alpha], radii_m[at.radius]);
-    Pulse pulse = to_pulse(records[at.record].record, b.gravity);
-    const double f = scale_factor(at.record, at.alpha, at.level);
-    std::vector<double> scaled(*pulse.record);
-    for (double& a : scaled) a *= f;
-    pulse.record = std::make_shared<const std::vector<double>>(std::move(scaled));
+    // Every cell of a record shares its samples (both components); the level scales them per lane.
+    const SuiteMember& rec = records[at.record];
+    Pulse pulse = rec.pulse.record && b.gravity == block.gravity ? rec.pulse : to_pulse(rec.record, b.gravity);
+    pulse.record_scale = scale_factor(at.record, at.alpha, at.level);
     return make_cell_model(b, scaled_anchorage(sc, block, b), pulse, equations, impact_threshold);
 }
 
@@ -118,8 +117,9 @@ SuiteSpec make_suite_spec(const std::string& suite_path, const Block& block, std
     const RecordSuite suite = read_record_suite(suite_path);
     spec.metadata_columns = suite.metadata_columns;
     for (const SuiteRecord& entry : suite.records) {
-        SuiteMember m{entry, read_record(entry.source), {}};
+        SuiteMember m{entry, read_record(entry.source), {}, {}};
         m.measures = intensity_measures(m.record);
+        m.pulse = to_pulse(m.record, block.gravity);
         // A level is reached by dividing by the record's own measure: a record without one
         // (all zeros) cannot be scaled to any level.
         const double own = measure == IntensityMeasure::pgv_m_s ? m.measures.pgv_m_s : m.measures.pga_g;

@@ -63,6 +63,8 @@ struct SingleOptions {
     std::string record_format = "auto";  ///< auto: at2 for a .AT2 file, else time_accel
     double record_dt_s = 0.0;            ///< accel_only: the sampling interval [s]
     int record_column = 0;               ///< 1-based, the time column counted; 0: the format's default
+    std::string record_vertical;         ///< the vertical component's file ("" with a column: --record's file)
+    int record_vertical_column = 0;      ///< its column, 1-based as record_column; 0: none or the format's default
 };
 
 struct Options {

@@ -25,8 +25,9 @@ enum class PulseKind { sine, constant, record, ricker };
 
 /// One ground motion. sine: a_p0 sin(omega t + psi) on [0, periods 2 pi / omega] with an
 /// optional vertical a_v0 sin(omega t + psi_v) over the same window (Harmonic); constant:
-/// Housner's a_p0 held for `duration_s` (Rectangle); record: samples in g at a fixed interval,
-/// linear between samples (Recorded); ricker: the Ricker wavelet of peak a_p0 and omega (Ricker).
+/// Housner's a_p0 held for `duration_s` (Rectangle); record: horizontal and optional vertical
+/// samples in g at a fixed interval, linear between samples, times record_scale (Recorded); the
+/// samples are shared, not copied, by the cells that scale one record; ricker: the Ricker wavelet of peak a_p0 and omega (Ricker).
 struct Pulse {
     PulseKind kind = PulseKind::sine;
     double ax_g = 0.0;          ///< horizontal amplitude a_p0 / g
@@ -36,8 +37,10 @@ struct Pulse {
     double phase_y = 0.0;       ///< psi_v [rad] (sine)
     double periods = 1.0;       ///< sine: window length in periods 2 pi / omega
     double duration_s = 0.0;    ///< constant pulse length [s]
-    std::shared_ptr<const std::vector<double>> record;  ///< record: samples / g
+    std::shared_ptr<const std::vector<double>> record;    ///< record: horizontal samples / g
+    std::shared_ptr<const std::vector<double>> record_y;  ///< record: vertical samples / g, same times (null: none)
     double record_dt_s = 0.0;   ///< record: sampling interval [s]
+    double record_scale = 1.0;  ///< record: factor on both components, applied after interpolation
 
     double end_time() const;
     /// Horizontal, vertical ground acceleration / g at time t inside the window.
@@ -72,7 +75,7 @@ decltype(auto) visit(const Pulse& p, F&& f) {
     switch (p.kind) {
         case PulseKind::sine: return f(Harmonic{p.ax_g, p.omega, p.phase, p.ay_g, p.phase_y, p.periods});
         case PulseKind::constant: return f(Rectangle{p.ax_g, p.duration_s});
-        case PulseKind::record: return f(Recorded{p.record.get(), p.record_dt_s});
+        case PulseKind::record: return f(Recorded{p.record.get(), p.record_y.get(), p.record_dt_s, p.record_scale});
         case PulseKind::ricker: return f(Ricker{p.ax_g, p.omega});
     }
     return f(Rectangle{0.0, 0.0});  // not reached: every kind has its case

@@ -84,8 +84,10 @@ struct Record {
 /// absurd record (dt outside [record_dt_min_s, record_dt_max_s], |a| > record_accel_max_g).
 Record read_record(const RecordSource& source);
 
-/// The horizontal ground of `record` as the integrator's Pulse, in units of the block's
-/// gravity `gravity` [m/s^2]. The vertical component is not carried (Pulse has none for records).
+/// The ground of `record` as the integrator's Pulse, in units of the block's gravity `gravity`
+/// [m/s^2]: the horizontal and, if read, the vertical samples (upward positive, the block's
+/// weight m (g + a_v); docs/physics.md, "Recorded ground motions"), at scale 1. Throws
+/// InputError("record-vertical", ...) if a vertical sample is -g or below (free fall).
 Pulse to_pulse(const Record& record, double gravity);
 
 /// `simulate --record`: a time/acceleration file in `units` ("g", "m/s^2" or "cm/s^2"), times

@@ -35,6 +35,7 @@ struct SuiteMember {
     SuiteRecord entry;
     Record record;
     IntensityMeasures measures;
+    Pulse pulse;  ///< the record at the block's g and scale 1, whose samples every cell shares (may be unset)
 };
 
 struct SuiteSpec {
