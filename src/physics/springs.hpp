@@ -45,10 +45,6 @@ public:
     /// Energy the K_min -> K_max switches put into the spring so far [J].
     double switch_energy() const { return e_switch_; }
 
-    /// The next time after t at which the law may switch on its own while the ground acts (a
-    /// zero of ax for the adaptive law), or +inf: steps end there, like at any time event.
-    double next_switch(const Pulse& pulse, double t) const { return adaptive() ? pulse.next_ax_zero(t) : INFINITY; }
-
     /// Uplift from rest: ax theta < 0 there, the adaptive law's K_max, and the spring is slack.
     void at_uplift() { k_max_ = true; }
     /// A run from a state other than rest (basins): K from the state, K_min at a turning point as

@@ -37,8 +37,12 @@ struct Recorded {
         const GroundLane c = lane_coefficients();
         const double t_end = end_time();
         auto ax_at = [&c](double tt) { return lane<false>(c, tt, 1.0).ax; };
-        double a0 = ax_at(t);  // each segment's start is the previous one's end, read once
-        for (double t0 = t, t1 = next_kink(t); t0 < t_end; t0 = t1, t1 = next_kink(t1)) {
+        // From the sample at or before t, so that every t of a segment finds the same zero (the
+        // integrator keeps it until t reaches it); each segment's start is the last one's end.
+        double s0 = std::floor(t / dt_s) * dt_s;
+        if (s0 > t) s0 -= dt_s;
+        double a0 = ax_at(s0);
+        for (double t0 = s0, t1 = next_kink(s0); t0 < t_end; t0 = t1, t1 = next_kink(t1)) {
             const double a1 = ax_at(std::min(t1, t_end));
             if (a0 != 0.0 && (a1 == 0.0 || (a0 > 0.0) != (a1 > 0.0))) {
                 const double tz = t0 + (t1 - t0) * a0 / (a0 - a1);
