@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <random>
 
-#include "../src/physics/event_stepper.hpp"
+#include "../../src/physics/event_stepper.hpp"
 #include "rocksweep/physics/system.hpp"
 
 namespace rocksweep {
