@@ -10,12 +10,13 @@
 #include "rocksweep/physics/energy.hpp"
 #include "rocksweep/physics/history.hpp"
 #include "rocksweep/physics/integrator.hpp"
+#include "smatteo_case.hpp"
 
 using namespace rocksweep;
 
 namespace {
-const Block kBlock = rectangular_block(0.30, 1.36, 3361.0);
-const double kStrength = 0.4 * 3361.0 * 9.81;
+const Block& kBlock = rocksweep::testing::kSMatteo;
+const double kStrength = rocksweep::testing::kSMatteoStrength;
 }  // namespace
 
 TEST(Energy, PotentialsAreTheIntegralsOfTheRestoringTerms) {
