@@ -118,7 +118,10 @@ def main(folder):
     # Why the events method's lead over the paper's is bounded: the ground's slope jumps at every
     # sample, so a one-step method of order 4 ends a step at every sample while the block rocks.
     rocking = sum(sum(1 for x in ref[r] if x != 0.0) for r in runs)
-    steps = {p: sum(int(outcomes(folder, p)[r]["steps"]) for r in runs) for p in ("events48", "events384", "paper")}
+    steps = {}
+    for p in ("events48", "events384", "paper"):
+        o = outcomes(folder, p)  # read once per peer, not once per run
+        steps[p] = sum(int(o[r]["steps"]) for r in runs)
     print(f"\n== Steps (RK4 steps over the {len(runs)} runs; one RK4 step costs about the same in every method) ==")
     print(f"record samples at which the reference block is rocking: {rocking}")
     for p, n in steps.items():
