@@ -2,7 +2,8 @@
 """Maps of a rocksweep spectra file, one panel per scenario.
 
     plot_spectra.py IN.h5 -o OUT [--field NAME ...|all] [--scenario NAME ...]
-    plot_spectra.py IN.h5 -o OUT --diff A B
+                    [--at AXIS=VALUE ...] [--across AXIS]
+    plot_spectra.py IN.h5 -o OUT --diff A B [--at AXIS=VALUE ...]
 
 x = omega_p / p, y = a_p0 / (alpha g), with the pulse period T_p [s] on top and the peak ground
 acceleration [g] on the right (from the file's p and alpha). Writes OUT.png and OUT.pdf (maps
@@ -14,6 +15,12 @@ impacts, broken; `all` draws every one the file holds. --diff A B maps where sce
 the block up that A lets overturn (B saves it) and the reverse (B loses it).
 Cells not yet computed in a partial file are grey and hatched; cells a --refine sweep
 inferred carry only the outcome and are grey on the other maps.
+
+A file swept over parameter axes (rocksweep sweep --axis, e.g. phase_rad) holds one spectrum per
+point of them. --at AXIS=VALUE picks the point nearest VALUE (default: the configured value where
+the axis holds it, else the first point); --across AXIS draws one panel per point of AXIS, which
+is the default for a single scenario. T_p and the PGA on the secondary axes follow each panel's
+block when R or alpha is an axis.
 """
 import math
 import os
@@ -172,8 +179,74 @@ def value_scale(field, panels):
     return plt.Normalize(lo, hi), cmap
 
 
-def figure(S, n_panels):
-    """A figure with n_panels map axes (2 columns beyond one) and a legend row below them.
+class Panel:
+    """One map: a scenario's spectrum at one point of the parameter axes."""
+
+    def __init__(self, S, name, at, title):
+        self.name, self.title = name, title
+        sc = S["scenarios"][name]
+        self.sc = {k: (v[at] if isinstance(v, np.ndarray) and v.ndim == len(S["axes"]) else v) for k, v in sc.items()}
+        # The block of this point: R and alpha may be axes (the file's attributes are the configured block's).
+        a = S["attrs"]
+        point = {n: S[n][i] for n, i in zip(S["axes"][:-2], at)}
+        radius, alpha = point.get("radius_m", a.get("radius_m")), point.get("alpha_rad", a.get("alpha_rad"))
+        self.alpha = alpha
+        self.p = a.get("p_rad_s")
+        if ("radius_m" in point or "alpha_rad" in point) and a.get("inertia_ratio") and a.get("gravity_m_s2"):
+            self.p = math.sqrt(a["gravity_m_s2"] / (a["inertia_ratio"] * radius))
+
+
+def point_words(S, at):
+    return ", ".join("{} = {:.4g}{}".format(AXIS_SYMBOLS.get(n, n), S[n][i], AXIS_UNITS.get(n, ""))
+                     for n, i in zip(S["axes"][:-2], at))
+
+
+AXIS_SYMBOLS = {"phase_rad": "ψ", "vertical_g": "a_v0/g", "vertical_phase_rad": "ψ_v", "restitution": "e",
+                "radius_m": "R", "alpha_rad": "α", "strength_ratio": "F_u/(mg)"}
+AXIS_UNITS = {"phase_rad": " rad", "vertical_phase_rad": " rad", "radius_m": " m", "alpha_rad": " rad"}
+CONFIGURED = {"phase_rad": "phase_rad", "vertical_g": "vertical_g", "vertical_phase_rad": "vertical_phase_rad",
+              "restitution": "e", "radius_m": "radius_m", "alpha_rad": "alpha_rad"}
+
+
+def choose_point(S, at_args, parser):
+    """Index on every parameter axis: --at AXIS=VALUE (nearest), else the configured value if the
+    axis holds it, else its first point."""
+    params = S["axes"][:-2]
+    at = []
+    wanted = {}
+    for text in at_args or []:
+        name, _, value = text.partition("=")
+        if name not in params:
+            parser.error("--at {}: the file's parameter axes are {}".format(text, ", ".join(params) or "none"))
+        try:
+            wanted[name] = float(value)
+        except ValueError:
+            parser.error("--at {}: VALUE must be a number".format(text))
+    for n in params:
+        target = wanted.get(n, S["attrs"].get(CONFIGURED.get(n, ""), np.nan))
+        hit = np.flatnonzero(S[n] == target) if n not in wanted else []
+        at.append(int(hit[0]) if len(hit) else int(np.argmin(np.abs(S[n] - target))) if np.isfinite(target) else 0)
+    return at
+
+
+def panels_of(S, names, at, across):
+    """Panels in order: each scenario, and within it each point of `across` (if any), titled by
+    the scenario, its point on `across`, or both."""
+    params = S["axes"][:-2]
+    k = params.index(across) if across else None
+    points = [at[:k] + [i] + at[k + 1:] for i in range(len(S[across]))] if across else [at]
+    out = []
+    for nm, title in zip(names, scenario_titles(S, names)):
+        for pt in points:
+            words = "{} = {:.4g}{}".format(AXIS_SYMBOLS[across], S[across][pt[k]], AXIS_UNITS.get(across, "")) if across else ""
+            text = words if len(names) == 1 and across else title + ("\n" + words if words else "")
+            out.append(Panel(S, nm, tuple(pt), text))
+    return out
+
+
+def figure(S, n_panels, blocks=None):
+    """A figure with n_panels map axes (2 columns beyond one) and a legend row below them;
+    `blocks` gives each panel's (p, alpha) for its secondary axes (default: the file's).
     Returns (fig, panel axes in order, legend axis)."""
     ncols = 1 if n_panels == 1 else 2
     nrows = math.ceil(n_panels / ncols)
@@ -200,7 +273,8 @@ def figure(S, n_panels):
         ax.tick_params(labelbottom=last_in_column)
         ax.set_ylabel(r"$a_{p0} / (\alpha g)$" if c == 0 else "")
         ax.tick_params(labelleft=c == 0)
-        rsplot.user_axes(ax, p, alpha, top=r == 0, right=c == ncols - 1 or k == n_panels - 1)
+        pk, ak = blocks[k] if blocks else (p, alpha)
+        rsplot.user_axes(ax, pk, ak, top=r == 0, right=c == ncols - 1 or k == n_panels - 1)
     return fig, axes, legend_ax
 
 
@@ -242,13 +316,13 @@ def scenario_titles(S, names):
     return [t + ("  [{}]".format(nm) if titles.count(t) > 1 else "") for t, nm in zip(titles, names)]
 
 
-def plot_field(S, names, field, out):
-    panels = [field_layers(field, S["scenarios"][nm]) for nm in names]
-    fig, axes, legend_ax = figure(S, len(names))
+def plot_field(S, maps, field, out, where=""):
+    panels = [field_layers(field, m.sc) for m in maps]
+    fig, axes, legend_ax = figure(S, len(maps), [(m.p, m.alpha) for m in maps])
     kind, bar_label, words = FIELDS[field]
     norm, cmap = value_scale(field, panels) if kind == "values" else (None, None)
     mappable = None
-    for ax, layers, title in zip(axes, panels, scenario_titles(S, names)):
+    for ax, layers, title in zip(axes, panels, [m.title for m in maps]):
         drawn = draw(ax, S, layers, norm, cmap)
         mappable = drawn or mappable
         ax.set_title(title)
@@ -257,21 +331,22 @@ def plot_field(S, names, field, out):
             ax.text(0.5, 0.5, shown[0], transform=ax.transAxes, ha="center", va="center", fontsize=11, color="0.3")
     if mappable is not None:
         extend = {"t_overturn": "both", "impacts": "both", "mu_required": "max"}.get(field, "neither")
-        fig.colorbar(mappable, ax=axes, label=bar_label, shrink=0.9 if len(names) <= 2 else 0.6, extend=extend)
-    legend(legend_ax, panels, 1 if len(names) % 2 else 2)
-    fig.suptitle(header(S, words), fontsize=11)
+        fig.colorbar(mappable, ax=axes, label=bar_label, shrink=0.9 if len(maps) <= 2 else 0.6, extend=extend)
+    legend(legend_ax, panels, 1 if len(maps) % 2 else 2)
+    fig.suptitle(header(S, words) + where, fontsize=11)
     return rsplot.save(fig, out)
 
 
-def plot_diff(S, name_a, name_b, out):
-    scs = S["scenarios"]
+def plot_diff(S, name_a, name_b, at, out):
     titles = dict(zip([name_a, name_b], scenario_titles(S, [name_a, name_b])))
-    layers = diff_layers(scs[name_a], scs[name_b], titles[name_a], titles[name_b])
-    fig, axes, legend_ax = figure(S, 1)
+    a, b = Panel(S, name_a, tuple(at), ""), Panel(S, name_b, tuple(at), "")
+    layers = diff_layers(a.sc, b.sc, titles[name_a], titles[name_b])
+    fig, axes, legend_ax = figure(S, 1, [(a.p, a.alpha)])
     draw(axes[0], S, layers)
     axes[0].set_title("{}  versus  {}".format(titles[name_b], titles[name_a]))
     legend(legend_ax, [layers], 1)
-    fig.suptitle(header(S, "where one anchorage saves the block and where it loses it"), fontsize=11)
+    where = "\nat " + point_words(S, at) if at else ""
+    fig.suptitle(header(S, "where one anchorage saves the block and where it loses it") + where, fontsize=11)
     return rsplot.save(fig, out)
 
 
@@ -281,16 +356,28 @@ def main(argv):
                    help="what to map: " + ", ".join(FIELDS) + " or all (default outcome); several write OUT_<field> each")
     p.add_argument("--scenario", nargs="+", help="only these scenarios (default: all, in config order)")
     p.add_argument("--diff", nargs=2, metavar=("A", "B"), help="map where B saves / loses the block against A")
+    p.add_argument("--at", nargs="+", metavar="AXIS=VALUE", help="the point of the parameter axes to draw (nearest)")
+    p.add_argument("--across", metavar="AXIS", help="one panel per point of this parameter axis")
     args = p.parse_args(legacy_order(argv))
     S = read_spectra.load(args.inputs[0])
+    params = S["axes"][:-2]
+    if args.across and args.across not in params:
+        p.error("--across {}: the file's parameter axes are {}".format(args.across, ", ".join(params) or "none"))
+    at = choose_point(S, args.at, p)
     names = args.scenario or list(S["scenarios"])
     unknown = [nm for nm in names + (args.diff or []) if nm not in S["scenarios"]]
     if unknown:
         p.error("no scenario {} in {}; it holds: {}".format(", ".join(unknown), args.inputs[0],
                                                             ", ".join(S["scenarios"])))
     if args.diff:
-        plot_diff(S, args.diff[0], args.diff[1], args.output)
+        plot_diff(S, args.diff[0], args.diff[1], at, args.output)
         return 0
+    across = args.across or (params[0] if params and len(names) == 1 and not args.at else None)
+    maps = panels_of(S, names, at, across)
+    fixed = [i for i, n in enumerate(params) if n != across]
+    where = "\nat " + point_words({**S, "axes": [params[i] for i in fixed] + ["", ""]}, [at[i] for i in fixed]) if fixed else ""
+    if across and len(names) == 1:
+        where = "\n" + scenario_titles(S, names)[0] + where.replace("\n", ", ")
     fields = list(FIELDS) if "all" in args.field else args.field
     stored = [f for f in fields if all(f in S["scenarios"][nm] for nm in names)]
     missing = sorted(set(fields) - set(stored))
@@ -298,7 +385,7 @@ def main(argv):
         sys.stderr.write("plot_spectra.py: {} not stored in {}: skipped\n".format(", ".join(missing), args.inputs[0]))
     stem = rsplot.output_stem(args.output)
     for f in stored:
-        plot_field(S, names, f, stem if len(fields) == 1 else "{}_{}".format(stem, f))
+        plot_field(S, maps, f, stem if len(fields) == 1 else "{}_{}".format(stem, f), where)
     return 0 if stored else 1
 
 

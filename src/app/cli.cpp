@@ -15,6 +15,7 @@
 #include "rocksweep/app/design_command.hpp"
 #include "rocksweep/app/suite_command.hpp"
 #include "rocksweep/core/errors.hpp"
+#include "rocksweep/grid/parameter_axis.hpp"
 #include "rocksweep/physics/history.hpp"
 #include "rocksweep/app/option_checks.hpp"
 #include "rocksweep/app/option_combinations.hpp"
@@ -110,6 +111,10 @@ void add_model_options(CLI::App& app, Options& o) {
     app.add_option("--adaptive-theta-f-ratio", g.adaptive_theta_f_ratio, "Adaptive: theta_f / alpha of the K_max spring")
         ->check(number_in(1e-3, 1e3, none))->capture_default_str()->group(grd);
     app.add_option("--scenario", g.only, "Run only this scenario (repeatable); names as `rocksweep info` lists")->group(grd);
+    app.add_option("--axis", g.axes,
+                   "A parameter axis beside amplitude and frequency, NAME=LO:HI:POINTS or NAME=V1,V2,... "
+                   "(repeatable, slowest first); NAME one of " + parameter_names())
+        ->group(grd);
 
     NumericsOptions& n = o.numerics;
     const char* num = "Numerics";
@@ -159,8 +164,14 @@ void print_info(const Options& o, std::ostream& out) {
     out << "grid\n"
         << "  omega_p / p: " << spec.omega_ratio.lo << " .. " << spec.omega_ratio.hi << ", " << spec.omega_ratio.points << " points\n"
         << "  a_p0 / (alpha g): " << spec.amplitude_ratio.lo << " .. " << spec.amplitude_ratio.hi << ", "
-        << spec.amplitude_ratio.points << " points\n"
-        << "  " << spec.scenarios.size() << " scenarios x " << spec.cells_per_scenario() << " = " << spec.cell_count() << " cells\n";
+        << spec.amplitude_ratio.points << " points\n";
+    for (const ParameterAxis& a : spec.axes) {
+        const ParameterInfo& i = parameter_info(a.parameter);
+        out << "  " << i.name << " (" << i.long_name << (std::string(i.units) == "1" ? "" : ", " + std::string(i.units)) << "): ";
+        for (std::size_t k = 0; k < a.values.size(); ++k) out << (k ? ", " : "") << a.values[k];
+        out << "\n";
+    }
+    out << "  " << spec.scenarios.size() << " scenarios x " << spec.cells_per_scenario() << " = " << spec.cell_count() << " cells\n";
     out << "scenarios\n";
     for (const Scenario& s : spec.scenarios) {
         const Anchorage& a = s.anchorage;

@@ -118,7 +118,7 @@ void check_simulate(const Given& given, const Options& o) {
     only_if(given, "--kmin-ratio", s.anchorage == "adaptive", "--anchorage adaptive (here " + a + ")");
     // Sweep-only options typed for a history would be ignored; from a shared config they are not.
     for (const char* opt : {"--omega-ratio-range", "--omega-ratio-points", "--amplitude-ratio-range", "--amplitude-ratio-points",
-                            "--anchorages", "--theta-f-ratios", "--kmin-ratios", "--adaptive-theta-f-ratio", "--scenario"})
+                            "--anchorages", "--theta-f-ratios", "--kmin-ratios", "--adaptive-theta-f-ratio", "--scenario", "--axis"})
         if (given.source(opt) == Source::command_line)
             throw InputError(std::string(opt).substr(2), given.value(opt),
                              "an option of sweep and info only; simulate takes --omega-ratio, --amplitude-ratio, --anchorage, "
@@ -145,12 +145,31 @@ void check_sweep_kinds(const Given& given, const Options& o) {
     check("--adaptive-law", "adaptive");
 }
 
+/// A parameter axis replaces the option that sets the same parameter: both would leave one
+/// of them silently unused.
+void check_axes(const Given& given, const std::string& subcommand, const Options& o) {
+    if (subcommand == "suite" || subcommand == "design" || subcommand == "basin")
+        only_if(given, "--axis", false, "sweep, info and merge (" + subcommand + " has axes of its own)");
+    const std::pair<const char*, const char*> replaced[] = {
+        {"phase_rad", "--phase"}, {"vertical_g", "--vertical-amplitude"}, {"vertical_phase_rad", "--vertical-phase"},
+        {"restitution", "--restitution"}};
+    for (std::string text : o.grid.axes) {
+        std::string name = text.substr(0, text.find('='));
+        std::replace(name.begin(), name.end(), '-', '_');
+        for (const auto& [axis, option] : replaced)
+            if (name == axis && given(option) && !given.at_default_value(option))
+                throw InputError(std::string(option).substr(2), given.value(option),
+                                 "not together with --axis " + text + " (the axis sets " + axis + " in every cell)");
+    }
+}
+
 }  // namespace
 
 void check_combinations(const CLI::App& app, const std::string& subcommand, const Options& o, const std::vector<std::string>& args) {
     const Given given(app, args);
     check_block(given);
     only_if(given, "--paper-dt", o.numerics.method == "paper", "--method paper (the events method chooses its own step)");
+    check_axes(given, subcommand, o);
     if (subcommand == "simulate") check_simulate(given, o);
     else {
         check_sweep_kinds(given, o);

@@ -8,6 +8,7 @@
 #include <set>
 
 #include "rocksweep/core/errors.hpp"
+#include "rocksweep/grid/block_family.hpp"
 #include "rocksweep/app/memory_budget.hpp"
 #include "rocksweep/records/record.hpp"
 
@@ -161,6 +162,51 @@ IntegratorSettings make_settings(const NumericsOptions& o) {
     return s;
 }
 
+namespace {
+
+/// The --axis options into spec.axes, in the order given (the first varies slowest).
+void add_parameter_axes(const Options& o, SweepSpec& spec) {
+    for (const std::string& text : o.grid.axes) {
+        ParameterAxis axis = parse_parameter_axis("axis", text);
+        const Parameter p = axis.parameter;
+        const std::string name = parameter_info(p).name;
+        for (const ParameterAxis& a : spec.axes)
+            if (a.parameter == p) throw InputError("axis", text, "one axis per parameter (" + name + " is given twice)");
+        const bool pulse_part = p == Parameter::phase || p == Parameter::vertical_g || p == Parameter::vertical_phase;
+        if (pulse_part && !takes_phase(spec.pulse_family))
+            throw InputError("axis", text, name + " only with --pulse one-sine or n-sine (here " + to_string(spec.pulse_family) + ")");
+        spec.axes.push_back(std::move(axis));
+    }
+}
+
+/// Every plane's block and anchorages, built once here so that a combination that makes none
+/// (e above Housner's value of a reshaped block) is refused before any work, with its point.
+void check_planes(const SweepSpec& spec) {
+    for (std::size_t j = 0; j < spec.planes_per_scenario(); ++j) {
+        try {
+            const SweepSpec::Plane plane = spec.plane(j);
+            if (plane.reshaped || plane.strength_ratio)
+                for (const Scenario& s : spec.scenarios) anchorage_on(s, spec.block, plane.block, plane.strength_ratio);
+        } catch (const InputError& e) {
+            std::string axes, where;
+            std::size_t rest = j;
+            std::vector<std::string> coords(spec.axes.size());
+            for (std::size_t k = spec.axes.size(); k-- > 0;) {
+                const ParameterAxis& a = spec.axes[k];
+                coords[k] = std::string(parameter_info(a.parameter).name) + " = " + format_short(a.values[rest % a.values.size()]);
+                rest /= a.values.size();
+            }
+            for (std::size_t k = 0; k < spec.axes.size(); ++k) {
+                axes += (axes.empty() ? "" : " ") + spec.axes[k].text;
+                where += (where.empty() ? "" : ", ") + coords[k];
+            }
+            throw InputError("axis", axes, e.allowed() + " (at " + where + ")");
+        }
+    }
+}
+
+}  // namespace
+
 SweepSpec make_sweep_spec(const Options& o) {
     SweepSpec spec;
     spec.block = make_block(o.block);
@@ -221,12 +267,14 @@ SweepSpec make_sweep_spec(const Options& o) {
             if (spec.scenarios[i].name == spec.scenarios[j].name)
                 throw InputError(spec.scenarios[i].name.rfind("adaptive", 0) == 0 ? "kmin-ratios" : "theta-f-ratios",
                                  spec.scenarios[i].name, "distinct values (a scenario is listed twice)");
+    add_parameter_axes(o, spec);
     // Rank 0 holds every cell's results: refuse a grid that cannot fit before allocating it.
     const double cells = static_cast<double>(spec.cell_count());
     require_memory("omega-ratio-points", std::to_string(spec.omega_ratio.points),
                    cells * static_cast<double>(SweepResults::bytes_per_cell()),
                    "with --amplitude-ratio-points " + std::to_string(spec.amplitude_ratio.points) + " and " +
                        std::to_string(spec.scenarios.size()) + " scenario(s), the results of " + format_short(cells) + " cells");
+    check_planes(spec);
     return spec;
 }
 

@@ -206,37 +206,41 @@ std::vector<std::uint8_t> known_before(const Refinement& refine, int k, const st
 
 std::vector<IndexRange> SweepRun::refinement_pass(const Refinement& refine, int k) {
     // What earlier passes found is read back from the file: 3 bytes per cell of one scenario.
+    // Each spectrum (a plane of a scenario: one point of every parameter axis) is refined alone.
     save();
-    const std::size_t per = spec_.cells_per_scenario();
-    std::vector<std::uint8_t> outcome(per), done(per);
+    const std::size_t per = spec_.cells_per_scenario(), plane = spec_.plane_cells();
+    std::vector<std::uint8_t> outcome(plane), done(plane);
     std::vector<IndexRange> todo;
-    for (std::size_t s = 0; s < spec_.scenarios.size() && save_error_.empty(); ++s) {
-        stream_->read_outcomes(s, outcome.data(), done.data());
-        const std::vector<std::uint8_t> known = known_before(refine, k, outcome);
-        for (std::size_t i : refine.cells_for_pass(k, outcome.data(), known.data())) {
-            if (done[i] == cell_computed) continue;  // computed before a kill
-            if (!todo.empty() && todo.back().first + todo.back().count == s * per + i) ++todo.back().count;
-            else todo.push_back({s * per + i, 1});
+    for (std::size_t s = 0; s < spec_.scenarios.size() && save_error_.empty(); ++s)
+        for (std::size_t first = 0; first < per && save_error_.empty(); first += plane) {
+            stream_->read_outcomes(s, first, plane, outcome.data(), done.data());
+            const std::vector<std::uint8_t> known = known_before(refine, k, outcome);
+            for (std::size_t i : refine.cells_for_pass(k, outcome.data(), known.data())) {
+                if (done[i] == cell_computed) continue;  // computed before a kill
+                const std::size_t cell = s * per + first + i;
+                if (!todo.empty() && todo.back().first + todo.back().count == cell) ++todo.back().count;
+                else todo.push_back({cell, 1});
+            }
         }
-    }
     if (!cmd_.quiet) log_ << "refinement pass " << k + 1 << " of " << refine.passes() << "\n";
     return todo;
 }
 
 void SweepRun::infer_the_rest(const Refinement& refine) {
     save();
-    const std::size_t per = spec_.cells_per_scenario();
-    std::vector<std::uint8_t> outcome(per), done(per);
-    for (std::size_t s = 0; s < spec_.scenarios.size() && save_error_.empty(); ++s) {
-        try {
-            stream_->read_outcomes(s, outcome.data(), done.data());
-            std::vector<std::uint8_t> known = known_before(refine, refine.passes(), outcome);
-            refine.fill(outcome.data(), known.data());
-            stream_->add_inferred(s, outcome.data(), done.data(), known.data());
-        } catch (const std::exception& e) {
-            save_error_ = e.what();
+    const std::size_t per = spec_.cells_per_scenario(), plane = spec_.plane_cells();
+    std::vector<std::uint8_t> outcome(plane), done(plane);
+    for (std::size_t s = 0; s < spec_.scenarios.size() && save_error_.empty(); ++s)
+        for (std::size_t first = 0; first < per && save_error_.empty(); first += plane) {
+            try {
+                stream_->read_outcomes(s, first, plane, outcome.data(), done.data());
+                std::vector<std::uint8_t> known = known_before(refine, refine.passes(), outcome);
+                refine.fill(outcome.data(), known.data());
+                stream_->add_inferred(s, first, plane, outcome.data(), done.data(), known.data());
+            } catch (const std::exception& e) {
+                save_error_ = e.what();
+            }
         }
-    }
 }
 
 void SweepRun::run_passes() {

@@ -5,6 +5,8 @@
 #include <numeric>
 #include <vector>
 
+#include "rocksweep/core/errors.hpp"
+#include "rocksweep/grid/block_family.hpp"
 #include "rocksweep/physics/integrator.hpp"
 
 namespace rocksweep {
@@ -21,15 +23,59 @@ std::vector<double> Axis::values() const {
     return v;
 }
 
+std::size_t SweepSpec::planes_per_scenario() const {
+    std::size_t n = 1;
+    for (const ParameterAxis& a : axes) n *= a.values.size();
+    return n;
+}
+
+SweepSpec::Plane SweepSpec::plane(std::size_t plane_index) const {
+    Plane p{block, pulse_shape(), std::nullopt, false, std::vector<std::size_t>(axes.size())};
+    for (std::size_t k = axes.size(); k-- > 0;) {
+        p.at[k] = plane_index % axes[k].values.size();
+        plane_index /= axes[k].values.size();
+    }
+    double alpha = block.alpha_rad, radius = block.radius_m;
+    std::optional<double> e;
+    for (std::size_t k = 0; k < axes.size(); ++k) {
+        const double x = axes[k].values[p.at[k]];
+        switch (axes[k].parameter) {
+            case Parameter::phase: p.shape.phase = x; break;
+            case Parameter::vertical_g: p.shape.vertical_g = x; break;
+            case Parameter::vertical_phase: p.shape.vertical_phase = x; break;
+            case Parameter::restitution: e = x; break;
+            case Parameter::radius: radius = x; break;
+            case Parameter::alpha: alpha = x; break;
+            case Parameter::strength_ratio: p.strength_ratio = x; break;
+        }
+    }
+    p.reshaped = alpha != block.alpha_rad || radius != block.radius_m;
+    if (p.reshaped) p.block = reshaped_block(block, alpha, radius);
+    if (e) {
+        const Block& b = p.block;  // equivalent_block checks e against this block's Housner value
+        p.block.e = equivalent_block(b.radius_m, b.alpha_rad, b.inertia_ratio, b.mass_kg, b.gravity, *e).e;
+    }
+    return p;
+}
+
 CellModel SweepSpec::cell(std::size_t index) const {
     const std::size_t per = cells_per_scenario();
     const Scenario& sc = scenarios.at(index / per);
     const std::size_t in = index % per;
-    const double w_ratio = omega_ratio.at(in % omega_ratio.points);
-    const double a_ratio = amplitude_ratio.at(in / omega_ratio.points);
-    // a_p / g = (a_p / (alpha g)) alpha
-    const Pulse pulse = make_pulse(pulse_shape(), a_ratio * block.alpha_rad, w_ratio * block.p());
-    return make_cell_model(block, sc.anchorage, pulse, equations, impact_threshold);
+    const std::size_t on_plane = in % plane_cells();
+    const double w_ratio = omega_ratio.at(on_plane % omega_ratio.points);
+    const double a_ratio = amplitude_ratio.at(on_plane / omega_ratio.points);
+    if (axes.empty()) {
+        // a_p / g = (a_p / (alpha g)) alpha
+        const Pulse pulse = make_pulse(pulse_shape(), a_ratio * block.alpha_rad, w_ratio * block.p());
+        return make_cell_model(block, sc.anchorage, pulse, equations, impact_threshold);
+    }
+    // The ratios are the block's own: a_p / g = (a_p / (alpha g)) alpha and omega_p = (omega_p / p) p
+    // of the plane's block. The anchorage keeps the scenario's where the block and F_u are unchanged.
+    const Plane p = plane(in / plane_cells());
+    const Anchorage a = p.reshaped || p.strength_ratio ? anchorage_on(sc, block, p.block, p.strength_ratio) : sc.anchorage;
+    const Pulse pulse = make_pulse(p.shape, a_ratio * p.block.alpha_rad, w_ratio * p.block.p());
+    return make_cell_model(p.block, a, pulse, equations, impact_threshold);
 }
 
 void SweepResults::resize(std::size_t n) {

@@ -19,12 +19,25 @@ namespace rocksweep::spectra_detail {
 // writer's contiguous, uncompressed storage is not such a change: readers see the same datasets.)
 constexpr std::int64_t format_version = 2;
 
-// The axes of every scenario's grid, slowest first: they alone shape the layout.
+// The axes of every scenario's grid, slowest first: they alone shape the layout. The parameter
+// axes come first, so that each of their points holds one contiguous spectrum.
 inline std::vector<GridAxis> grid_axes(const SweepSpec& spec) {
-    return {
-        {"amplitude_ratio", "1", "a_p0 / (alpha g)", spec.amplitude_ratio.values()},
-        {"omega_ratio", "1", "omega_p / p", spec.omega_ratio.values()},
-    };
+    std::vector<GridAxis> axes;
+    for (const ParameterAxis& a : spec.axes) {
+        const ParameterInfo& i = parameter_info(a.parameter);
+        axes.push_back({i.name, i.units, i.long_name, a.values});
+    }
+    axes.push_back({"amplitude_ratio", "1", "a_p0 / (alpha g)", spec.amplitude_ratio.values()});
+    axes.push_back({"omega_ratio", "1", "omega_p / p", spec.omega_ratio.values()});
+    return axes;
+}
+
+// The root attribute `parameter_axes`: their names in order, "" for the plain 2-D spectra. A
+// file without it (written before parameter axes existed) has none.
+inline std::string parameter_axis_names(const SweepSpec& spec) {
+    std::string s;
+    for (const ParameterAxis& a : spec.axes) s += (s.empty() ? "" : ", ") + std::string(parameter_info(a.parameter).name);
+    return s;
 }
 
 // Attributes that define the cells (the block's and the pulse's) and the settings that shape

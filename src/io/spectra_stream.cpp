@@ -230,11 +230,11 @@ void SpectraStream::read_column(std::string_view name, std::size_t first, std::s
     });
 }
 
-void SpectraStream::read_outcomes(std::size_t scenario, std::uint8_t* outcome, std::uint8_t* done) const {
-    const std::size_t per = spec_.cells_per_scenario();
-    as_save(path_, [&] {
-        fd_->read_at(outcome, per, place_[scenario][0].offset);
-        fd_->read_at(done, per, place_[scenario][done_column].offset);
+void SpectraStream::read_outcomes(std::size_t scenario, std::size_t first, std::size_t count, std::uint8_t* outcome,
+                                  std::uint8_t* done) const {
+    as_save(path_, [&] {  // both columns are one byte a cell
+        fd_->read_at(outcome, count, place_[scenario][0].offset + first);
+        fd_->read_at(done, count, place_[scenario][done_column].offset + first);
     });
 }
 
@@ -244,21 +244,20 @@ void SpectraStream::add(std::size_t first, std::size_t count, const CellResult* 
     done_count_ += count;
 }
 
-void SpectraStream::add_inferred(std::size_t scenario, const std::uint8_t* outcome, const std::uint8_t* done_before,
-                                 const std::uint8_t* done_after) {
-    const std::size_t per = spec_.cells_per_scenario();
+void SpectraStream::add_inferred(std::size_t scenario, std::size_t first, std::size_t count, const std::uint8_t* outcome,
+                                 const std::uint8_t* done_before, const std::uint8_t* done_after) {
     std::vector<Run> runs;
     std::size_t n = 0;
-    for (std::size_t i = 0; i < per; ++i) {
+    for (std::size_t i = 0; i < count; ++i) {
         if (done_after[i] != cell_inferred || done_before[i] == cell_inferred) continue;
-        if (runs.empty() || runs.back().cell + runs.back().count != i) runs.push_back({scenario, i, n, 0});
+        if (runs.empty() || runs.back().cell + runs.back().count != first + i) runs.push_back({scenario, first + i, n, 0});
         ++runs.back().count, ++n;
     }
     SweepResults cells;  // the empty values of resize(), then the inferred outcome
     cells.resize(n);
     for (const Run& r : runs)
         for (std::size_t j = 0; j < r.count; ++j) {
-            cells.outcome[r.from + j] = outcome[r.cell + j];
+            cells.outcome[r.from + j] = outcome[r.cell - first + j];
             cells.done[r.from + j] = cell_inferred;
         }
     done_count_ += n;

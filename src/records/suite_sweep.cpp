@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "rocksweep/core/errors.hpp"
+#include "rocksweep/grid/block_family.hpp"
 #include "rocksweep/physics/integrator.hpp"
 
 namespace rocksweep {
@@ -32,17 +33,6 @@ const MeasureInfo& info(IntensityMeasure m) {
     return measures[0];  // not reached: every measure has its row
 }
 
-/// The scenario's anchorage for the block scaled to `b`: the same ratios (F_u / (m g),
-/// theta_f / alpha, K_min / K_max), so K follows the block's size.
-Anchorage scaled_anchorage(const Scenario& s, const Block& configured, const Block& b) {
-    const Anchorage& a = s.anchorage;
-    if (a.kind == AnchorageKind::free) return free_anchorage();
-    const double strength = a.strength_n / (configured.mass_kg * configured.gravity) * b.mass_kg * b.gravity;
-    const double theta_f = s.theta_f_ratio * b.alpha_rad;
-    if (a.kind == AnchorageKind::constant) return constant_anchorage(b, strength, theta_f);
-    return adaptive_anchorage(b, strength, theta_f, s.kmin_ratio, a.break_rule, a.law);
-}
-
 }  // namespace
 
 IntensityMeasure parse_intensity_measure(const std::string& field, const std::string& text) {
@@ -55,16 +45,7 @@ std::string to_string(IntensityMeasure m) { return info(m).name; }
 const char* intensity_units(IntensityMeasure m) { return info(m).units; }
 const char* intensity_long_name(IntensityMeasure m) { return info(m).long_name; }
 
-Block SuiteSpec::block_of(double alpha_rad, double radius_m) const {
-    if (alpha_rad == block.alpha_rad && radius_m == block.radius_m) return block;
-    // Same density and depth ∝ R: m ∝ R^3 at fixed shape, and ∝ b h = R^2 sin(2 alpha) / 2 at
-    // fixed R. The restitution keeps its fraction of Housner's value (1 for Housner's own).
-    const double f = radius_m / block.radius_m;
-    const double mass = block.mass_kg * f * f * f * std::sin(2.0 * alpha_rad) / std::sin(2.0 * block.alpha_rad);
-    const double eh = housner_e(alpha_rad, block.inertia_ratio);
-    const double e = alpha_rad == block.alpha_rad ? block.e : std::min(eh, block.e / block.housner_e() * eh);
-    return equivalent_block(radius_m, alpha_rad, block.inertia_ratio, mass, block.gravity, e);
-}
+Block SuiteSpec::block_of(double alpha_rad, double radius_m) const { return reshaped_block(block, alpha_rad, radius_m); }
 
 double SuiteSpec::scale_factor(std::size_t r, std::size_t alpha, std::size_t level) const {
     const double x = intensity.at(level);
@@ -105,7 +86,7 @@ CellModel SuiteSpec::cell(std::size_t index) const {
     const SuiteMember& rec = records[at.record];
     Pulse pulse = rec.pulse.record && b.gravity == block.gravity ? rec.pulse : to_pulse(rec.record, b.gravity);
     pulse.record_scale = scale_factor(at.record, at.alpha, at.level);
-    return make_cell_model(b, scaled_anchorage(sc, block, b), pulse, equations, impact_threshold);
+    return make_cell_model(b, anchorage_on(sc, block, b), pulse, equations, impact_threshold);
 }
 
 SuiteSpec make_suite_spec(const std::string& suite_path, const Block& block, std::vector<Scenario> scenarios,

@@ -233,3 +233,22 @@ bad_input(suite_squat_alpha "--alpha-range = 0.5 1 is invalid: angles below 0.95
           suite --config ${CFG} --suite ${SUITE} --alpha-range 0.5 1 --alpha-points 3 -o ${OUT})
 bad_input(suite_alpha_degrees "--alpha-range = 10 is invalid: out of range; allowed: a number in \\[0.0001, 1.5708\\] rad"
           suite --config ${CFG} --suite ${SUITE} --alpha-range 10 20 --alpha-points 3 -o ${OUT})
+
+# Parameter axes (--axis): the form, the name, the range, twice, a pulse without a phase, the
+# option the axis replaces, a combination that makes no block, a command with axes of its own.
+bad_input(axis_unknown "--axis = colour=1:2:3 is invalid: an axis named one of phase_rad, vertical_g"
+          sweep --config ${CFG} -o ${OUT} --axis colour=1:2:3)
+bad_input(axis_form "--axis = phase_rad=0:1 is invalid: NAME=LO:HI:POINTS or NAME=V1,V2,..."
+          sweep --config ${CFG} -o ${OUT} --axis phase_rad=0:1)
+bad_input(axis_range "--axis = vertical_g=0:1.5:3 is invalid: vertical_g values in \\[-0.99, 0.99\\]"
+          sweep --config ${CFG} -o ${OUT} --axis vertical_g=0:1.5:3)
+bad_input(axis_twice "--axis = phase_rad=1,2 is invalid: one axis per parameter \\(phase_rad is given twice\\)"
+          sweep --config ${CFG} -o ${OUT} --axis phase_rad=0,1 --axis phase_rad=1,2)
+bad_input(axis_family "--axis = phase_rad=0,1 is invalid: phase_rad only with --pulse one-sine or n-sine \\(here ricker\\)"
+          sweep --config ${CFG} -o ${OUT} --pulse ricker --axis phase_rad=0,1)
+bad_input(axis_and_option "--phase = 0.5 is invalid: not together with --axis phase_rad=0,1"
+          sweep --config ${CFG} -o ${OUT} --phase 0.5 --axis phase_rad=0,1)
+bad_input(axis_combination "--axis = alpha_rad=0.1,0.3 restitution=0.9 is invalid: 0 < e <= Housner's value 0.869.* \\(at alpha_rad = 0.3, restitution = 0.9"
+          sweep --config ${CFG} -o ${OUT} --axis alpha_rad=0.1,0.3 --axis restitution=0.9)
+bad_input(axis_suite "--axis = phase_rad=0,1 is invalid: only with sweep, info and merge \\(suite has axes of its own\\)"
+          suite --config ${CFG} --suite ${PROJECT_SOURCE_DIR}/configs/records_suite.csv -o ${OUT} --axis phase_rad=0,1)

@@ -144,7 +144,11 @@ TEST_F(Stream, InferredCellsTakeTheirOutcomeAndEmptyValues) {
     s.checkpoint();
     std::vector<std::uint8_t> outcome(per, 2), before(per, 0), after(per, 0);
     for (std::size_t i = 3; i < 9; ++i) after[i] = cell_inferred;
-    s.add_inferred(0, outcome.data(), before.data(), after.data());
+    s.add_inferred(0, 0, 12, outcome.data(), before.data(), after.data());
+    // A plane further on: its cells are counted from `first`, its arrays from 0.
+    std::vector<std::uint8_t> later(4, 0), later_after(4, cell_inferred), later_outcome(4, 1);
+    later_after[0] = 0;
+    s.add_inferred(0, 20, 4, later_outcome.data(), later.data(), later_after.data());
     s.finish(1.0);
     const SweepResults r = read_spectra_results(out, spec, settings);
     EXPECT_EQ(r.done[2], 0);
@@ -152,8 +156,12 @@ TEST_F(Stream, InferredCellsTakeTheirOutcomeAndEmptyValues) {
     EXPECT_EQ(r.outcome[8], 2);
     EXPECT_TRUE(std::isnan(r.max_rotation[5]));
     EXPECT_EQ(r.impacts[5], 0);
-    EXPECT_EQ(s.done_count(), per + 6);
-    EXPECT_EQ(root_int(out, "n_done"), static_cast<std::int64_t>(per + 6));
+    EXPECT_EQ(r.done[20], 0);
+    EXPECT_EQ(r.done[21], cell_inferred);
+    EXPECT_EQ(r.outcome[23], 1);
+    EXPECT_EQ(r.done[24], 0);
+    EXPECT_EQ(s.done_count(), per + 6 + 3);
+    EXPECT_EQ(root_int(out, "n_done"), static_cast<std::int64_t>(per + 6 + 3));
 }
 
 TEST(Hdf5InPlace, FixedDatasetTakesBytesWrittenAtItsOffset) {

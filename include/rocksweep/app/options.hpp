@@ -43,6 +43,7 @@ struct GridOptions {
     std::vector<double> kmin_ratios{0.5, 0.1};
     double adaptive_theta_f_ratio = 1.0;  ///< K_max's spring: theta_f / alpha
     std::vector<std::string> only;        ///< --scenario: run only these
+    std::vector<std::string> axes;        ///< --axis: parameter axes, as written (grid/parameter_axis.hpp)
 };
 
 struct NumericsOptions {

@@ -1,9 +1,12 @@
 #pragma once
-/// The work list of a sweep: scenarios x amplitude x frequency, one cell per index.
+/// The work list of a sweep: scenarios x parameter axes x amplitude x frequency, one cell per index.
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "rocksweep/grid/parameter_axis.hpp"
 
 #include "rocksweep/physics/anchorage.hpp"
 #include "rocksweep/physics/block.hpp"
@@ -43,12 +46,30 @@ struct SweepSpec {
     Axis omega_ratio;                ///< omega_p / p (a rectangle lasts pi / omega_p)
     Axis amplitude_ratio;            ///< a_p / (alpha g), a_p the peak ground acceleration
     std::vector<Scenario> scenarios;
+    std::vector<ParameterAxis> axes;  ///< parameter axes, slowest first; each value a spectrum more
 
     PulseShape pulse_shape() const { return {pulse_family, pulse_cycles, phase, vertical_g, vertical_phase}; }
-    std::size_t cells_per_scenario() const { return omega_ratio.points * amplitude_ratio.points; }
+    /// Cells of one spectrum: the plane a_p0/(alpha g) x omega_p/p that refinement works on.
+    std::size_t plane_cells() const { return omega_ratio.points * amplitude_ratio.points; }
+    /// Spectra per scenario: the product of the parameter axes' sizes (1 without any).
+    std::size_t planes_per_scenario() const;
+    std::size_t cells_per_scenario() const { return planes_per_scenario() * plane_cells(); }
     std::size_t cell_count() const { return cells_per_scenario() * scenarios.size(); }
-    /// index = scenario * (n_amp n_omega) + i_amp * n_omega + i_omega (C order per scenario).
+    /// index = (scenario * n_planes + plane) * (n_amp n_omega) + i_amp * n_omega + i_omega, the
+    /// plane counting the parameter axes in C order (the first varies slowest).
     CellModel cell(std::size_t index) const;
+
+    /// What the parameter axes set in the cells of one plane (of every scenario).
+    struct Plane {
+        Block block;                          ///< reshaped by radius_m / alpha_rad, e by restitution
+        PulseShape shape;                     ///< phase and vertical pulse
+        std::optional<double> strength_ratio;  ///< F_u / (m g) where an axis sets it
+        bool reshaped = false;                 ///< block differs from the configured one in R or alpha
+        std::vector<std::size_t> at;           ///< index on each parameter axis
+    };
+    /// Throws InputError (neutral block.* ids) when a combination makes no block (say e above
+    /// Housner's value of a reshaped block).
+    Plane plane(std::size_t plane_index) const;
 };
 
 /// Result columns of a sweep, indexed like SweepSpec::cell.

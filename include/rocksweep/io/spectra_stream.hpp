@@ -51,19 +51,21 @@ public:
     /// of the dataset's element type (docs/hdf5.md). Throws std::invalid_argument for an unknown
     /// name, std::runtime_error on a read error.
     void read_column(std::string_view name, std::size_t first, std::size_t count, void* out) const;
-    /// One scenario's `outcome` and `done` as the file holds them (cells_per_scenario each).
-    void read_outcomes(std::size_t scenario, std::uint8_t* outcome, std::uint8_t* done) const;
+    /// `outcome` and `done` of `count` cells of one scenario from its cell `first`, as the file
+    /// holds them (refinement reads one spectrum, a plane of the grid, at a time).
+    void read_outcomes(std::size_t scenario, std::size_t first, std::size_t count, std::uint8_t* outcome,
+                       std::uint8_t* done) const;
 
     /// Takes finished cells [first, first + count) (any order, each cell once) until the next
     /// checkpoint.
     void add(std::size_t first, std::size_t count, const CellResult* cells);
     /// Bytes held for the next checkpoint.
     std::size_t pending_bytes() const { return pending_cells_.size() * (sizeof(CellResult) + sizeof(std::size_t)); }
-    /// Marks the cells of `scenario` whose `done_after` is cell_inferred and `done_before` is not
-    /// as inferred, with `outcome` (the other columns take the empty values NaN / 0), and writes
-    /// them now.
-    void add_inferred(std::size_t scenario, const std::uint8_t* outcome, const std::uint8_t* done_before,
-                      const std::uint8_t* done_after);
+    /// Of the `count` cells of `scenario` from its cell `first`, marks those whose `done_after` is
+    /// cell_inferred and `done_before` is not as inferred, with `outcome` (the other columns take
+    /// the empty values NaN / 0), and writes them now.
+    void add_inferred(std::size_t scenario, std::size_t first, std::size_t count, const std::uint8_t* outcome,
+                      const std::uint8_t* done_before, const std::uint8_t* done_after);
 
     /// Writes the cells added since the last checkpoint and syncs them, then the root attribute
     /// n_done; the first one also publishes the file under `path`. Throws std::runtime_error("cannot write PATH: ...").

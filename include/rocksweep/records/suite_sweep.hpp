@@ -65,9 +65,7 @@ struct SuiteSpec {
     /// The factor record `r` is multiplied by at intensity level `level` on blocks of slenderness
     /// alphas_rad[alpha] (only PGA / (g tan alpha) depends on it).
     double scale_factor(std::size_t r, std::size_t alpha, std::size_t level) const;
-    /// The configured block reshaped to slenderness alpha and size R: same density, depth ∝ R,
-    /// I0/(mR^2), and e as the same fraction of Housner's value. The configured alpha and R give
-    /// the configured block, bit for bit.
+    /// The configured block reshaped to slenderness alpha and size R (reshaped_block).
     Block block_of(double alpha_rad, double radius_m) const;
 };
 
