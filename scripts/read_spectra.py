@@ -5,12 +5,14 @@ As a module:
     import read_spectra
     S = read_spectra.load("spectra.h5")
     S["axes"]                                  # the grid's axes in index order:
-                                               #   ["amplitude_ratio", "omega_ratio"]
+                                               #   ["amplitude_ratio", "omega_ratio"], after
+                                               #   any parameter axes (sweep --axis)
     S["amplitude_ratio"], S["omega_ratio"]     # each axis, 1-D
     S["attrs"], S["provenance"]                # root and /provenance attributes (str, numbers)
     sc = S["scenarios"]["constant_tf0.5"]      # scenarios in config order
     sc["attrs"]["anchorage"]                   # "free" | "constant" | "adaptive", ...
     sc["outcome"][i_amp, i_omega]              # numpy arrays over the axes, C order
+                                               #   ([i_phase, i_amp, i_omega] with --axis phase_rad=...)
 
 Every scenario holds these arrays (docs/hdf5.md says what each means):
     outcome           uint8    0 safe, 1 overturned with impact, 2 without impact, 255 not converged

@@ -1,5 +1,5 @@
 // The streaming spectra writer: the file is laid out once, then filled in place by pwrite.
-// Why this design, and what it was measured against: docs/hdf5.md, "Streaming".
+// Why this design, and what it was measured against: docs/streaming.md.
 #include "rocksweep/io/spectra_stream.hpp"
 
 #include <fcntl.h>

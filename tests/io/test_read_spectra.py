@@ -21,7 +21,10 @@ class Load(unittest.TestCase):
         for path in FILES:
             S = read_spectra.load(path)
             with h5py.File(path, "r") as f:
-                self.assertEqual(S["axes"], ["amplitude_ratio", "omega_ratio"])
+                names = f.attrs.get("parameter_axes", b"")
+                names = names.decode() if isinstance(names, bytes) else names
+                params = [n.strip() for n in names.split(",") if n.strip()]
+                self.assertEqual(S["axes"], params + ["amplitude_ratio", "omega_ratio"])
                 order = sorted(f["spectra"], key=lambda n: f["spectra"][n].attrs["index"])
                 self.assertEqual(list(S["scenarios"]), order)
                 for name in order:
@@ -38,9 +41,17 @@ class Load(unittest.TestCase):
                 self.assertIsInstance(S["provenance"]["config"], str)
 
     def test_summary_names_the_grid(self):
-        S = read_spectra.load(FILES[-1])
+        S = read_spectra.load(FILES[0])
         self.assertIn("grid: {} amplitude_ratio x {} omega_ratio".format(len(S["amplitude_ratio"]), len(S["omega_ratio"])),
                       read_spectra.summary(S))
+
+    def test_parameter_axes_come_first(self):
+        with_axes = [p for p in FILES if "phase_rad" in read_spectra.load(p)["axes"]]
+        self.assertTrue(with_axes, "no file with parameter axes among " + ", ".join(FILES))
+        S = read_spectra.load(with_axes[0])
+        self.assertEqual(S["axes"], ["phase_rad", "radius_m", "amplitude_ratio", "omega_ratio"])
+        self.assertEqual(S["scenarios"]["free"]["outcome"].shape, (2, 3, 6, 5))
+        self.assertIn("grid: 2 phase_rad x 3 radius_m x 6 amplitude_ratio x 5 omega_ratio", read_spectra.summary(S))
 
 
 if __name__ == "__main__":

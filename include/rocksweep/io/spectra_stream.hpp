@@ -1,6 +1,6 @@
 #pragma once
-/// The spectra file of a running sweep, written as chunks complete (layout: docs/hdf5.md,
-/// "Streaming"). Rank 0 holds only the cells finished since the last checkpoint; a checkpoint
+/// The spectra file of a running sweep, written as chunks complete (docs/streaming.md;
+/// layout: docs/hdf5.md). Rank 0 holds only the cells finished since the last checkpoint; a checkpoint
 /// writes those cells' bytes in place and costs in proportion to them, not to the file.
 ///
 /// The file's result datasets are contiguous and allocated when it is created, so a checkpoint
@@ -8,7 +8,7 @@
 /// columns first, then (after fdatasync) the `done` column. A kill at any instant therefore
 /// leaves a file that every reader opens, in which each cell with done != 0 holds its final
 /// values; --resume recomputes the rest, and the results are bitwise those of an uninterrupted
-/// run. (docs/hdf5.md says why this was chosen over a journal, SWMR and parallel HDF5.)
+/// run. (docs/streaming.md says why this was chosen over a journal, SWMR and parallel HDF5.)
 #include <cstddef>
 #include <cstdint>
 #include <memory>
