@@ -202,8 +202,9 @@ def point_words(S, at):
 
 
 AXIS_SYMBOLS = {"phase_rad": "ψ", "vertical_g": "a_v0/g", "vertical_phase_rad": "ψ_v", "restitution": "e",
-                "radius_m": "R", "alpha_rad": "α", "strength_ratio": "F_u/(mg)"}
-AXIS_UNITS = {"phase_rad": " rad", "vertical_phase_rad": " rad", "radius_m": " m", "alpha_rad": " rad"}
+                "radius_m": "R", "alpha_rad": "α", "strength_ratio": "F_u/(mg)", "theta_f_ratio": "θ_f/α",
+                "kmin_ratio": "K_min/K_max", "stiffness_n_m": "K"}
+AXIS_UNITS = {"phase_rad": " rad", "vertical_phase_rad": " rad", "radius_m": " m", "alpha_rad": " rad", "stiffness_n_m": " N/m"}
 CONFIGURED = {"phase_rad": "phase_rad", "vertical_g": "vertical_g", "vertical_phase_rad": "vertical_phase_rad",
               "restitution": "e", "radius_m": "radius_m", "alpha_rad": "alpha_rad"}
 
@@ -311,8 +312,15 @@ def legend(legend_ax, layers_list, ncols):
                      frameon=False, fontsize=9)
 
 
+# Scenario attributes that a parameter axis of the same quantity replaces (the group keeps the
+# configured value): left out of its title.
+SWEPT_ATTRS = {"theta_f_ratio": ["theta_f_ratio"], "stiffness_n_m": ["theta_f_ratio"], "kmin_ratio": ["kmin_ratio"]}
+
+
 def scenario_titles(S, names):
-    titles = [rsplot.anchorage_words(S["scenarios"][nm]["attrs"]) for nm in names]
+    swept = {k for axis in S["axes"][:-2] for k in SWEPT_ATTRS.get(axis, [])}
+    titles = [rsplot.anchorage_words({k: v for k, v in S["scenarios"][nm]["attrs"].items() if k not in swept})
+              for nm in names]
     return [t + ("  [{}]".format(nm) if titles.count(t) > 1 else "") for t, nm in zip(titles, names)]
 
 

@@ -117,12 +117,14 @@ def anchorage_words(attrs):
     kind = attrs.get("anchorage", "")
     if kind == "free":
         return "free-standing"
+    # A ratio left out of `attrs` (a spectra file sweeps it as an axis) is left out of the words.
+    has_theta_f = "theta_f_ratio" in attrs
     theta_f = r"$\theta_f = {}$".format(alpha_fraction(attrs.get("theta_f_ratio", float("nan"))))
     if kind == "constant":
-        return "constant $K$, " + theta_f
+        return "constant $K$" + (", " + theta_f if has_theta_f else "")
     if kind == "adaptive":
-        words = r"adaptive, $K_{{min}} = {:g}\,K_{{max}}$".format(attrs.get("kmin_ratio", float("nan")))
-        if attrs.get("theta_f_ratio", 1) != 1:
+        words = r"adaptive, $K_{{min}} = {:g}\,K_{{max}}$".format(attrs["kmin_ratio"]) if "kmin_ratio" in attrs else "adaptive"
+        if has_theta_f and attrs["theta_f_ratio"] != 1:
             words += ", " + theta_f
         if attrs.get("break_rule") == "force":
             words += ", breaks at $F_u$"

@@ -153,13 +153,23 @@ void check_axes(const Given& given, const std::string& subcommand, const Options
     const std::pair<const char*, const char*> replaced[] = {
         {"phase_rad", "--phase"}, {"vertical_g", "--vertical-amplitude"}, {"vertical_phase_rad", "--vertical-phase"},
         {"restitution", "--restitution"}};
+    // Lists of scenarios: a config's list gives way to the axis (its scenarios become one); a list
+    // typed beside the axis is a contradiction.
+    const std::pair<const char*, const char*> typed_lists[] = {
+        {"theta_f_ratio", "--theta-f-ratios"}, {"theta_f_ratio", "--adaptive-theta-f-ratio"},
+        {"stiffness_n_m", "--theta-f-ratios"}, {"stiffness_n_m", "--adaptive-theta-f-ratio"},
+        {"kmin_ratio", "--kmin-ratios"}, {"strength_ratio", "--strength-ratio"}};
     for (std::string text : o.grid.axes) {
         std::string name = text.substr(0, text.find('='));
         std::replace(name.begin(), name.end(), '-', '_');
+        auto refuse = [&](const char* option, const char* axis) {
+            throw InputError(std::string(option).substr(2), given.value(option),
+                             "not together with --axis " + text + " (the axis sets " + axis + " in every cell)");
+        };
         for (const auto& [axis, option] : replaced)
-            if (name == axis && given(option) && !given.at_default_value(option))
-                throw InputError(std::string(option).substr(2), given.value(option),
-                                 "not together with --axis " + text + " (the axis sets " + axis + " in every cell)");
+            if (name == axis && given(option) && !given.at_default_value(option)) refuse(option, axis);
+        for (const auto& [axis, option] : typed_lists)
+            if (name == axis && given.source(option) == Source::command_line) refuse(option, axis);
     }
 }
 

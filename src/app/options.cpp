@@ -164,6 +164,48 @@ IntegratorSettings make_settings(const NumericsOptions& o) {
 
 namespace {
 
+/// An axis of theta_f / alpha or K makes the constant scenarios of a list one scenario,
+/// "constant", and an axis of K_min / K_max the adaptive ones one "adaptive" (with its law's
+/// suffix): the axis, not the list, then sets the value, and one group holds the spectra over it.
+void collapse_anchorage_scenarios(SweepSpec& spec) {
+    const ParameterAxis* by_kind[3] = {};  // the axis that sets constant, adaptive's theta_f, adaptive's rho
+    for (const ParameterAxis& a : spec.axes) {
+        if (a.parameter == Parameter::theta_f_ratio || a.parameter == Parameter::stiffness) {
+            if (by_kind[0])
+                throw InputError("axis", a.text, "not together with --axis " + by_kind[0]->text +
+                                                     " (K fixes theta_f = 2 atan(F_u / (4 b K)))");
+            by_kind[0] = by_kind[1] = &a;
+        }
+        if (a.parameter == Parameter::kmin_ratio) by_kind[2] = &a;
+    }
+    auto kind_of = [](const Scenario& s) { return s.anchorage.kind; };
+    for (const ParameterAxis* a : {by_kind[0], by_kind[2]}) {
+        if (!a) continue;
+        const bool adaptive_only = a->parameter == Parameter::kmin_ratio;
+        const bool any = std::any_of(spec.scenarios.begin(), spec.scenarios.end(), [&](const Scenario& s) {
+            return adaptive_only ? kind_of(s) == AnchorageKind::adaptive : kind_of(s) != AnchorageKind::free;
+        });
+        if (!any)
+            throw InputError("axis", a->text, adaptive_only ? "an adaptive anchorage among --anchorages (K_min / K_max is its)"
+                                                            : "a constant or adaptive anchorage among --anchorages (the axis sets its spring)");
+    }
+    std::vector<Scenario> kept;
+    bool constant_kept = false, adaptive_kept = false;
+    for (Scenario s : spec.scenarios) {
+        if (by_kind[0] && kind_of(s) == AnchorageKind::constant) {
+            if (constant_kept) continue;
+            s.name = "constant", constant_kept = true;
+        }
+        if (by_kind[2] && kind_of(s) == AnchorageKind::adaptive) {
+            if (adaptive_kept) continue;
+            const AdaptiveLaw law = s.anchorage.law;
+            s.name = "adaptive" + (law == AdaptiveLaw::paper ? std::string() : "_" + to_string(law)), adaptive_kept = true;
+        }
+        kept.push_back(std::move(s));
+    }
+    spec.scenarios = std::move(kept);
+}
+
 /// The --axis options into spec.axes, in the order given (the first varies slowest).
 void add_parameter_axes(const Options& o, SweepSpec& spec) {
     for (const std::string& text : o.grid.axes) {
@@ -177,6 +219,7 @@ void add_parameter_axes(const Options& o, SweepSpec& spec) {
             throw InputError("axis", text, name + " only with --pulse one-sine or n-sine (here " + to_string(spec.pulse_family) + ")");
         spec.axes.push_back(std::move(axis));
     }
+    collapse_anchorage_scenarios(spec);
 }
 
 /// Every plane's block and anchorages, built once here so that a combination that makes none
@@ -185,8 +228,8 @@ void check_planes(const SweepSpec& spec) {
     for (std::size_t j = 0; j < spec.planes_per_scenario(); ++j) {
         try {
             const SweepSpec::Plane plane = spec.plane(j);
-            if (plane.reshaped || plane.strength_ratio)
-                for (const Scenario& s : spec.scenarios) anchorage_on(s, spec.block, plane.block, plane.strength_ratio);
+            if (plane.reshaped || plane.anchorage.any())
+                for (const Scenario& s : spec.scenarios) anchorage_on(s, spec.block, plane.block, plane.anchorage);
         } catch (const InputError& e) {
             std::string axes, where;
             std::size_t rest = j;

@@ -24,6 +24,9 @@ constexpr ParameterInfo table[] = {
     {Parameter::radius, "radius_m", "m", "block size R (pivot to centre of mass)", 1e-3, 1e3, false},
     {Parameter::alpha, "alpha_rad", "rad", "slenderness alpha = atan(b / h)", min_alpha_rad, M_PI / 2, false},
     {Parameter::strength_ratio, "strength_ratio", "1", "anchorage strength F_u / (m g)", 0.0, 1e3, true},
+    {Parameter::theta_f_ratio, "theta_f_ratio", "1", "fracture angle theta_f / alpha of the (K_max) spring", 1e-3, 1e3, false},
+    {Parameter::kmin_ratio, "kmin_ratio", "1", "K_min / K_max of the adaptive anchorage", 1e-6, 1.0, false},
+    {Parameter::stiffness, "stiffness_n_m", "N/m", "spring stiffness K (K_max of the adaptive anchorage)", 0.0, 1e12, true},
 };
 
 std::string range_text(const ParameterInfo& i) {

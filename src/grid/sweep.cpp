@@ -30,7 +30,7 @@ std::size_t SweepSpec::planes_per_scenario() const {
 }
 
 SweepSpec::Plane SweepSpec::plane(std::size_t plane_index) const {
-    Plane p{block, pulse_shape(), std::nullopt, false, std::vector<std::size_t>(axes.size())};
+    Plane p{block, pulse_shape(), {}, false, std::vector<std::size_t>(axes.size())};
     for (std::size_t k = axes.size(); k-- > 0;) {
         p.at[k] = plane_index % axes[k].values.size();
         plane_index /= axes[k].values.size();
@@ -46,7 +46,10 @@ SweepSpec::Plane SweepSpec::plane(std::size_t plane_index) const {
             case Parameter::restitution: e = x; break;
             case Parameter::radius: radius = x; break;
             case Parameter::alpha: alpha = x; break;
-            case Parameter::strength_ratio: p.strength_ratio = x; break;
+            case Parameter::strength_ratio: p.anchorage.strength_ratio = x; break;
+            case Parameter::theta_f_ratio: p.anchorage.theta_f_ratio = x; break;
+            case Parameter::kmin_ratio: p.anchorage.kmin_ratio = x; break;
+            case Parameter::stiffness: p.anchorage.stiffness_n_m = x; break;
         }
     }
     p.reshaped = alpha != block.alpha_rad || radius != block.radius_m;
@@ -73,7 +76,7 @@ CellModel SweepSpec::cell(std::size_t index) const {
     // The ratios are the block's own: a_p / g = (a_p / (alpha g)) alpha and omega_p = (omega_p / p) p
     // of the plane's block. The anchorage keeps the scenario's where the block and F_u are unchanged.
     const Plane p = plane(in / plane_cells());
-    const Anchorage a = p.reshaped || p.strength_ratio ? anchorage_on(sc, block, p.block, p.strength_ratio) : sc.anchorage;
+    const Anchorage a = p.reshaped || p.anchorage.any() ? anchorage_on(sc, block, p.block, p.anchorage) : sc.anchorage;
     const Pulse pulse = make_pulse(p.shape, a_ratio * p.block.alpha_rad, w_ratio * p.block.p());
     return make_cell_model(p.block, a, pulse, equations, impact_threshold);
 }

@@ -252,3 +252,9 @@ bad_input(axis_combination "--axis = alpha_rad=0.1,0.3 restitution=0.9 is invali
           sweep --config ${CFG} -o ${OUT} --axis alpha_rad=0.1,0.3 --axis restitution=0.9)
 bad_input(axis_suite "--axis = phase_rad=0,1 is invalid: only with sweep, info and merge \\(suite has axes of its own\\)"
           suite --config ${CFG} --suite ${PROJECT_SOURCE_DIR}/configs/records_suite.csv -o ${OUT} --axis phase_rad=0,1)
+bad_input(axis_theta_f_and_stiffness "--axis = stiffness_n_m=1e4,1e5 is invalid: not together with --axis theta_f_ratio=0.5,1 \\(K fixes theta_f"
+          sweep --config ${CFG} -o ${OUT} --axis theta_f_ratio=0.5,1 --axis stiffness_n_m=1e4,1e5)
+bad_input(axis_kmin_without_adaptive "--axis = kmin_ratio=0.1,1 is invalid: an adaptive anchorage among --anchorages"
+          sweep --config ${CFG} -o ${OUT} --anchorages free constant --axis kmin_ratio=0.1,1)
+bad_input(axis_and_typed_list "--theta-f-ratios = 1 0.5 is invalid: not together with --axis theta_f_ratio=0.25:2:8"
+          sweep --config ${CFG} -o ${OUT} --theta-f-ratios 1 0.5 --axis theta_f_ratio=0.25:2:8)

@@ -62,6 +62,22 @@ assert "outcome(phase_rad, restitution, amplitude_ratio, omega_ratio)" in head
 print("netCDF readers: axes are dimensions with units")
 PY
 
+# theta_f / alpha as an axis: the constant scenarios of the list become one, "constant", whose
+# plane theta_f = alpha is the list's constant_tf1.
+small=(--config "$cfg" --omega-ratio-points 17 --amplitude-ratio-points 13 --anchorages constant --quiet)
+"$rs" sweep "${small[@]}" --axis theta_f_ratio=0.5,1 -o "$dir/tf.h5"
+"$rs" sweep "${small[@]}" --theta-f-ratios 1 -o "$dir/tf1.h5"
+"$py" - "$dir" <<'PY'
+import sys
+import h5py, numpy as np
+d = sys.argv[1]
+tf, plain = h5py.File(f"{d}/tf.h5", "r"), h5py.File(f"{d}/tf1.h5", "r")
+assert list(tf["spectra"]) == ["constant"], list(tf["spectra"])
+for col in ("outcome", "max_rotation", "impacts", "t_overturn", "peak_force_ratio", "broken", "mu_required"):
+    assert np.array_equal(tf["spectra/constant"][col][1], plain["spectra/constant_tf1"][col][()], equal_nan=True), col
+print("theta_f axis: one constant group, its theta_f = alpha plane bitwise the list's")
+PY
+
 # --resume with other axes: refused in one line, the file untouched.
 before=$(md5sum < "$dir/one.h5")
 set +e

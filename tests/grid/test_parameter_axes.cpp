@@ -142,11 +142,52 @@ TEST(SweepPlanes, AStrengthAxisSetsFuOverMgOfEveryAnchorage) {
     SweepSpec swept = small_spec();
     swept.axes.push_back(parse_parameter_axis("axis", "strength_ratio=0.2,0.8"));
     const SweepSpec::Plane p = swept.plane(1);
-    ASSERT_TRUE(p.strength_ratio);
-    const Anchorage a = anchorage_on(swept.scenarios[1], kSMatteo, p.block, p.strength_ratio);
+    ASSERT_TRUE(p.anchorage.strength_ratio);
+    const Anchorage a = anchorage_on(swept.scenarios[1], kSMatteo, p.block, p.anchorage);
     EXPECT_NEAR(a.strength_n, 0.8 * kSMatteo.mass_kg * kSMatteo.gravity, 1e-9);
     EXPECT_NEAR(a.theta_f_rad, kSMatteo.alpha_rad, 1e-15);  // theta_f / alpha kept: K doubles with F_u
     EXPECT_NEAR(a.k_max, 2.0 * swept.scenarios[1].anchorage.k_max, 1e-9 * a.k_max);
+}
+
+SweepSpec anchored_spec(double theta_f_ratio, double kmin_ratio) {
+    SweepSpec s = small_spec();
+    s.scenarios.pop_back();
+    s.scenarios.push_back({"constant", constant_anchorage(kSMatteo, kSMatteoStrength, theta_f_ratio * kSMatteo.alpha_rad),
+                           theta_f_ratio, 1.0});
+    s.scenarios.push_back({"adaptive",
+                           adaptive_anchorage(kSMatteo, kSMatteoStrength, theta_f_ratio * kSMatteo.alpha_rad, kmin_ratio),
+                           theta_f_ratio, kmin_ratio});
+    return s;
+}
+
+// theta_f / alpha and K_min / K_max as axes give the bits of the scenario lists they replace.
+TEST(SweepPlanes, AnchorageAxesAreTheScenariosTheyReplace) {
+    SweepSpec swept = anchored_spec(1.0, 0.5);
+    swept.axes.push_back(parse_parameter_axis("axis", "theta_f_ratio=0.5,2"));
+    swept.axes.push_back(parse_parameter_axis("axis", "kmin_ratio=0.1,1"));
+    const std::size_t per = swept.cells_per_scenario();
+    for (std::size_t plane = 0; plane < 4; ++plane) {
+        const double tf = plane / 2 == 0 ? 0.5 : 2.0, rho = plane % 2 == 0 ? 0.1 : 1.0;
+        const SweepSpec plain = anchored_spec(tf, rho);
+        for (std::size_t s = 0; s < 3; ++s) {
+            const std::vector<CellResult> a = run(swept, s * per + plane * 12, 12), b = run(plain, s * 12, 12);
+            for (std::size_t i = 0; i < 12; ++i)
+                EXPECT_TRUE(bitwise_equal(a[i], b[i])) << "scenario " << s << ", plane " << plane << ", cell " << i;
+        }
+    }
+}
+
+TEST(SweepPlanes, AStiffnessAxisSetsKAndTheFractureAngleFollowsFromFu) {
+    SweepSpec swept = anchored_spec(1.0, 0.5);
+    swept.axes.push_back(parse_parameter_axis("axis", "stiffness_n_m=2e4,2e5"));
+    const SweepSpec::Plane p = swept.plane(1);
+    const Anchorage c = anchorage_on(swept.scenarios[1], kSMatteo, p.block, p.anchorage);
+    EXPECT_EQ(c.k_max, 2e5);
+    EXPECT_NEAR(4.0 * kSMatteo.half_width_m() * std::tan(c.theta_f_rad / 2) * c.k_max, kSMatteoStrength, 1e-9 * kSMatteoStrength);
+    const Anchorage a = anchorage_on(swept.scenarios[2], kSMatteo, p.block, p.anchorage);
+    EXPECT_NEAR(a.k_max, 2e5, 1e-9 * 2e5);  // K_max, its theta_f from F_u, K_min = 0.5 K_max
+    EXPECT_NEAR(a.k_min, 0.5 * a.k_max, 1e-15 * a.k_max);
+    EXPECT_EQ(a.theta_f_rad, c.theta_f_rad);
 }
 
 TEST(SweepPlanes, ARestitutionAboveHousnersValueOfAReshapedBlockIsRefused) {

@@ -2,8 +2,8 @@
 /// The configured block and its anchorages carried to another size, slenderness or strength:
 /// what the grid does when block size R, alpha or F_u/(m g) is an axis, for pulse spectra and
 /// record suites alike (docs/suite.md, "Blocks").
-#include <optional>
 
+#include "rocksweep/grid/anchorage_setting.hpp"
 #include "rocksweep/grid/sweep.hpp"
 
 namespace rocksweep {
@@ -15,9 +15,10 @@ namespace rocksweep {
 Block reshaped_block(const Block& configured, double alpha_rad, double radius_m);
 
 /// The scenario's anchorage on block `b`, the configured block reshaped: the same ratios
-/// (F_u / (m g), or `strength_ratio` where given; theta_f / alpha; K_min / K_max), so K follows the size.
-/// Always rebuilt from the ratios, also on the configured block (the last bit of F_u may differ
-/// from the scenario's own): callers whose block is unchanged keep the scenario's anchorage.
-Anchorage anchorage_on(const Scenario& s, const Block& configured, const Block& b, std::optional<double> strength_ratio = std::nullopt);
+/// (F_u / (m g), theta_f / alpha, K_min / K_max) unless `set` gives them, so K follows the
+/// size. On a block of the configured weight F_u is the scenario's own, so that a point whose
+/// axes set what a scenario list would have set gives the same bits as that list. Throws
+/// InputError (anchorage.* ids) for a spring that cannot be.
+Anchorage anchorage_on(const Scenario& s, const Block& configured, const Block& b, const AnchorageSetting& set = {});
 
 }  // namespace rocksweep

@@ -1,7 +1,8 @@
 #pragma once
 /// A numeric parameter of the cells swept as an axis of a spectra grid, beside the two axes a
 /// spectrum is drawn on (a_p0/(alpha g) and omega_p/p): the pulse's phase, the vertical pulse,
-/// the restitution, the block's size or slenderness, the anchorage strength. Every value of an
+/// the restitution, the block's size or slenderness, the anchorage's strength, fracture angle,
+/// stiffness or K_min / K_max. Every value of an
 /// axis gives each scenario one more 2-D spectrum (docs/hdf5.md, "Parameter axes").
 #include <string>
 #include <vector>
@@ -16,6 +17,9 @@ enum class Parameter {
     radius,          ///< block size R [m] at the block's alpha and density
     alpha,           ///< slenderness alpha [rad] at the block's R and density
     strength_ratio,  ///< F_u / (m g) of every anchorage
+    theta_f_ratio,   ///< theta_f / alpha of the constant spring and of the adaptive K_max spring
+    kmin_ratio,      ///< K_min / K_max of the adaptive anchorage
+    stiffness,       ///< K [N/m] of the constant spring, K_max of the adaptive (theta_f from F_u)
 };
 
 /// What a parameter is called in options and files, its units and its range.

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "rocksweep/grid/anchorage_setting.hpp"
 #include "rocksweep/grid/parameter_axis.hpp"
 
 #include "rocksweep/physics/anchorage.hpp"
@@ -63,7 +64,7 @@ struct SweepSpec {
     struct Plane {
         Block block;                          ///< reshaped by radius_m / alpha_rad, e by restitution
         PulseShape shape;                     ///< phase and vertical pulse
-        std::optional<double> strength_ratio;  ///< F_u / (m g) where an axis sets it
+        AnchorageSetting anchorage;            ///< what the axes set of every anchorage
         bool reshaped = false;                 ///< block differs from the configured one in R or alpha
         std::vector<std::size_t> at;           ///< index on each parameter axis
     };
