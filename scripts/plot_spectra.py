@@ -318,7 +318,7 @@ SWEPT_ATTRS = {"theta_f_ratio": ["theta_f_ratio"], "stiffness_n_m": ["theta_f_ra
 
 
 def scenario_titles(S, names):
-    swept = {k for axis in S["axes"][:-2] for k in SWEPT_ATTRS.get(axis, [])}
+    swept = {k for axis in S.get("axes", [])[:-2] for k in SWEPT_ATTRS.get(axis, [])}  # (suite files: none)
     titles = [rsplot.anchorage_words({k: v for k, v in S["scenarios"][nm]["attrs"].items() if k not in swept})
               for nm in names]
     return [t + ("  [{}]".format(nm) if titles.count(t) > 1 else "") for t, nm in zip(titles, names)]
