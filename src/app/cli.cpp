@@ -278,6 +278,10 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
             ->check(one_of(families))->capture_default_str();
     };
     add_family_option(*sweep);
+    sweep->add_option("--refine-axes", sweep_cmd.refine_axes,
+                      "The two axes --refine works over, by name (default: amplitude_ratio omega_ratio; "
+                      "any two of the grid's, parameter axes included)")
+        ->expected(2);
     sweep->add_option("--part", sweep_cmd.part,
                       "Compute only part K of N of the cells (K/N, a job array's task); join the parts with rocksweep merge");
 

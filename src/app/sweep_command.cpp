@@ -9,6 +9,7 @@
 #include "rocksweep/app/run_support.hpp"
 #include "rocksweep/core/errors.hpp"
 #include "rocksweep/grid/refine.hpp"
+#include "rocksweep/grid/refine_planes.hpp"
 #include "rocksweep/grid/work_part.hpp"
 #include "rocksweep/io/output_claim.hpp"
 #include "rocksweep/io/spectra_stream.hpp"
@@ -48,6 +49,38 @@ std::vector<IndexRange> missing_cells(const SpectraStream& stream, std::size_t t
     return todo;
 }
 
+/// The planes --refine works on: over --refine-axes (two of the grid's axes, by name), by
+/// default the spectrum's own a_p0/(alpha g) x omega_p/p. None without --refine.
+std::optional<RefinePlanes> refine_planes(const SweepSpec& spec, const SweepCommand& cmd) {
+    std::vector<std::string> names;
+    std::vector<std::size_t> sizes;
+    for (const ParameterAxis& a : spec.axes) {
+        names.push_back(parameter_info(a.parameter).name);
+        sizes.push_back(a.values.size());
+    }
+    names.insert(names.end(), {"amplitude_ratio", "omega_ratio"});
+    sizes.insert(sizes.end(), {spec.amplitude_ratio.points, spec.omega_ratio.points});
+    std::vector<std::string> pair = cmd.refine_axes.empty() ? std::vector<std::string>{"amplitude_ratio", "omega_ratio"}
+                                                            : cmd.refine_axes;
+    const std::string shown = pair.size() == 2 ? pair[0] + " " + pair[1] : "";
+    if (cmd.refine_stride == 0) {
+        if (!cmd.refine_axes.empty()) throw InputError("refine-axes", shown, "only with --refine STRIDE");
+        return std::nullopt;
+    }
+    std::size_t at[2];
+    for (int k = 0; k < 2; ++k) {
+        std::string name = pair[k];
+        std::replace(name.begin(), name.end(), '-', '_');
+        const auto it = std::find(names.begin(), names.end(), name);
+        std::string all;
+        for (const std::string& n : names) all += (all.empty() ? "" : ", ") + n;
+        if (it == names.end()) throw InputError("refine-axes", shown, "two axes of the grid: " + all);
+        at[k] = static_cast<std::size_t>(it - names.begin());
+    }
+    if (at[0] == at[1]) throw InputError("refine-axes", shown, "two different axes");
+    return RefinePlanes(sizes, std::min(at[0], at[1]), std::max(at[0], at[1]));
+}
+
 /// One sweep, in the order it runs: plan (constructor), agree on the output, run the passes,
 /// finish. Rank 0 alone holds the output; every rank runs the same passes.
 class SweepRun {
@@ -58,6 +91,7 @@ public:
           part_(cmd.part.empty() ? WorkPart{} : parse_work_part(cmd.part)), log_(mpi) {
         if (part_.count > 1 && cmd.refine_stride != 0)
             throw InputError("part", cmd.part, "not with --refine: refinement needs the whole grid between its passes");
+        planes_ = refine_planes(spec_, cmd);
         prov_.version = ROCKSWEEP_VERSION;
         prov_.config_text = config_text;
         prov_.created_utc = utc_now();
@@ -79,11 +113,18 @@ private:
     ScheduleStats run_pass(const std::vector<IndexRange>& todo);
     std::vector<IndexRange> refinement_pass(const Refinement& refine, int k);
     void infer_the_rest(const Refinement& refine);
+    /// Plane `j` of scenario `s` as the file holds it: its span of cells (`span_*`) and the plane
+    /// gathered from it, row by row (`outcome`, `done`).
+    struct PlaneCells {
+        std::vector<std::uint8_t> span_outcome, span_done, outcome, done;
+    };
+    void read_plane(std::size_t s, std::size_t j, PlaneCells& p) const;
     void report_friction();
 
     const SweepCommand& cmd_;
     const MpiSession& mpi_;
     const SweepSpec spec_;
+    std::optional<RefinePlanes> planes_;  // with --refine: the planes it works on
     IntegratorSettings settings_;
     const int lanes_;
     const WorkPart part_;
@@ -204,39 +245,68 @@ std::vector<std::uint8_t> known_before(const Refinement& refine, int k, const st
     return known;
 }
 
-std::vector<IndexRange> SweepRun::refinement_pass(const Refinement& refine, int k) {
-    // What earlier passes found is read back from the file: 3 bytes per cell of one scenario.
-    // Each spectrum (a plane of a scenario: one point of every parameter axis) is refined alone.
-    save();
-    const std::size_t per = spec_.cells_per_scenario(), plane = spec_.plane_cells();
-    std::vector<std::uint8_t> outcome(plane), done(plane);
-    std::vector<IndexRange> todo;
-    for (std::size_t s = 0; s < spec_.scenarios.size() && save_error_.empty(); ++s)
-        for (std::size_t first = 0; first < per && save_error_.empty(); first += plane) {
-            stream_->read_outcomes(s, first, plane, outcome.data(), done.data());
-            const std::vector<std::uint8_t> known = known_before(refine, k, outcome);
-            for (std::size_t i : refine.cells_for_pass(k, outcome.data(), known.data())) {
-                if (done[i] == cell_computed) continue;  // computed before a kill
-                const std::size_t cell = s * per + first + i;
-                if (!todo.empty() && todo.back().first + todo.back().count == cell) ++todo.back().count;
-                else todo.push_back({cell, 1});
-            }
+void SweepRun::read_plane(std::size_t s, std::size_t j, PlaneCells& p) const {
+    const RefinePlanes& planes = *planes_;
+    const std::size_t first = planes.first(j), cols = planes.cols();
+    p.span_outcome.resize(planes.span());
+    p.span_done.resize(planes.span());
+    p.outcome.resize(planes.rows() * cols);
+    p.done.resize(planes.rows() * cols);
+    stream_->read_outcomes(s, first, planes.span(), p.span_outcome.data(), p.span_done.data());
+    for (std::size_t r = 0; r < planes.rows(); ++r)
+        for (std::size_t c = 0; c < cols; ++c) {
+            const std::size_t at = planes.cell(j, r, c) - first;
+            p.outcome[r * cols + c] = p.span_outcome[at];
+            p.done[r * cols + c] = p.span_done[at];
         }
+}
+
+std::vector<IndexRange> SweepRun::refinement_pass(const Refinement& refine, int k) {
+    // Each plane (the pair of axes refined over, at one point of every other axis) is refined
+    // alone, from what earlier passes found, read back from the file.
+    save();
+    const RefinePlanes& planes = *planes_;
+    const std::size_t per = spec_.cells_per_scenario();
+    PlaneCells p;
+    std::vector<std::size_t> cells;
+    for (std::size_t s = 0; s < spec_.scenarios.size() && save_error_.empty(); ++s)
+        for (std::size_t j = 0; j < planes.count() && save_error_.empty(); ++j) {
+            read_plane(s, j, p);
+            const std::vector<std::uint8_t> known = known_before(refine, k, p.outcome);
+            for (std::size_t i : refine.cells_for_pass(k, p.outcome.data(), known.data()))
+                if (p.done[i] != cell_computed)  // else computed before a kill
+                    cells.push_back(s * per + planes.cell(j, i / planes.cols(), i % planes.cols()));
+        }
+    std::sort(cells.begin(), cells.end());
+    std::vector<IndexRange> todo;
+    for (std::size_t cell : cells) {
+        if (!todo.empty() && todo.back().first + todo.back().count == cell) ++todo.back().count;
+        else todo.push_back({cell, 1});
+    }
     if (!cmd_.quiet) log_ << "refinement pass " << k + 1 << " of " << refine.passes() << "\n";
     return todo;
 }
 
 void SweepRun::infer_the_rest(const Refinement& refine) {
     save();
-    const std::size_t per = spec_.cells_per_scenario(), plane = spec_.plane_cells();
-    std::vector<std::uint8_t> outcome(plane), done(plane);
+    const RefinePlanes& planes = *planes_;
+    PlaneCells p;
+    std::vector<std::uint8_t> span_after;
     for (std::size_t s = 0; s < spec_.scenarios.size() && save_error_.empty(); ++s)
-        for (std::size_t first = 0; first < per && save_error_.empty(); first += plane) {
+        for (std::size_t j = 0; j < planes.count() && save_error_.empty(); ++j) {
             try {
-                stream_->read_outcomes(s, first, plane, outcome.data(), done.data());
-                std::vector<std::uint8_t> known = known_before(refine, refine.passes(), outcome);
-                refine.fill(outcome.data(), known.data());
-                stream_->add_inferred(s, first, plane, outcome.data(), done.data(), known.data());
+                read_plane(s, j, p);
+                std::vector<std::uint8_t> known = known_before(refine, refine.passes(), p.outcome);
+                refine.fill(p.outcome.data(), known.data());
+                // Back into the span: cells of other planes keep done_after = done_before, untouched.
+                span_after = p.span_done;
+                for (std::size_t i = 0; i < known.size(); ++i) {
+                    const std::size_t at = planes.cell(j, i / planes.cols(), i % planes.cols()) - planes.first(j);
+                    span_after[at] = known[i];
+                    p.span_outcome[at] = p.outcome[i];
+                }
+                stream_->add_inferred(s, planes.first(j), planes.span(), p.span_outcome.data(), p.span_done.data(),
+                                      span_after.data());
             } catch (const std::exception& e) {
                 save_error_ = e.what();
             }
@@ -249,7 +319,7 @@ void SweepRun::run_passes() {
         return;
     }
     // Every rank runs the same number of passes; only rank 0 knows each pass's cells.
-    const Refinement refine(spec_.amplitude_ratio.points, spec_.omega_ratio.points, cmd_.refine_stride);
+    const Refinement refine(planes_->rows(), planes_->cols(), cmd_.refine_stride);
     for (int k = 0; k < refine.passes(); ++k) {
         const std::vector<IndexRange> todo = mpi_.is_root() ? refinement_pass(refine, k) : std::vector<IndexRange>{};
         if (run_pass(todo).stopped) return;

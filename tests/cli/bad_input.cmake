@@ -258,3 +258,7 @@ bad_input(axis_kmin_without_adaptive "--axis = kmin_ratio=0.1,1 is invalid: an a
           sweep --config ${CFG} -o ${OUT} --anchorages free constant --axis kmin_ratio=0.1,1)
 bad_input(axis_and_typed_list "--theta-f-ratios = 1 0.5 is invalid: not together with --axis theta_f_ratio=0.25:2:8"
           sweep --config ${CFG} -o ${OUT} --theta-f-ratios 1 0.5 --axis theta_f_ratio=0.25:2:8)
+bad_input(refine_axes_unknown "--refine-axes = phase_rad omega_ratio is invalid: two axes of the grid: amplitude_ratio, omega_ratio"
+          sweep --config ${CFG} -o ${OUT} --refine 8 --refine-axes phase_rad omega_ratio)
+bad_input(refine_axes_without_refine "--refine-axes = amplitude_ratio omega_ratio is invalid: only with --refine STRIDE"
+          sweep --config ${CFG} -o ${OUT} --refine-axes amplitude_ratio omega_ratio)

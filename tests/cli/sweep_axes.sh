@@ -20,6 +20,15 @@ h5diff --exclude-path /provenance "$dir/one.h5" "$dir/two.h5" || { echo "1 and 2
 "${mpi[@]}" "$rs" sweep "${grid[@]}" "${axes[@]}" --refine 4 --chunk 3 -o "$dir/two_refine.h5"
 h5diff --exclude-path /provenance "$dir/one_refine.h5" "$dir/two_refine.h5" || { echo "refined: 1 and 2 ranks differ"; exit 1; }
 
+# Refinement over another pair (a parameter axis and the amplitude): planes that are not
+# contiguous in the file, gathered and scattered back.
+wide=(--config "$cfg" --omega-ratio-points 5 --amplitude-ratio-points 17 --anchorages constant --theta-f-ratios 1 --quiet)
+pair=(--axis phase_rad=0:1.5707963267948966:9 --refine 4 --refine-axes phase_rad amplitude_ratio)
+"$rs" sweep "${wide[@]}" --axis phase_rad=0:1.5707963267948966:9 -o "$dir/pair_full.h5"
+"$rs" sweep "${wide[@]}" "${pair[@]}" -o "$dir/pair_one.h5"
+"${mpi[@]}" "$rs" sweep "${wide[@]}" "${pair[@]}" --chunk 2 -o "$dir/pair_two.h5"
+h5diff --exclude-path /provenance "$dir/pair_one.h5" "$dir/pair_two.h5" || { echo "refined over a pair: 1 and 2 ranks differ"; exit 1; }
+
 # The plane psi = pi/2, e = 0.85, as a sweep of its own.
 "$rs" sweep "${grid[@]}" --phase 1.5707963267948966 --restitution 0.85 -o "$dir/plane.h5"
 
@@ -48,6 +57,20 @@ for sc in ("free", "constant_tf1"):
         for j in range(2):
             assert 0 < np.count_nonzero(computed[i, j]) < 13 * 17, (sc, i, j)
 print("planes: bitwise the sweep with their values; refinement per plane")
+
+# Over (phase, amplitude): for each omega a 9 x 17 plane; computed cells agree with the full sweep,
+# inferred ones take a uniform square's outcome, and some of both exist in every plane.
+full, ref = h5py.File(f"{d}/pair_full.h5", "r"), h5py.File(f"{d}/pair_one.h5", "r")
+done = ref["spectra/constant_tf1/done"][()]
+assert done.shape == (9, 17, 5) and np.all(done != 0)
+computed = done == 1
+want = full["spectra/constant_tf1/outcome"][()]
+assert np.array_equal(ref["spectra/constant_tf1/outcome"][()][computed], want[computed])
+for j in range(5):
+    assert 0 < np.count_nonzero(computed[:, :, j]) < 9 * 17, j
+agree = np.mean(ref["spectra/constant_tf1/outcome"][()] == want)
+assert agree > 0.97, agree
+print("refinement over phase_rad x amplitude_ratio: computed cells exact, {:.1%} of outcomes as the full sweep".format(agree))
 
 for engine in ("h5netcdf", "netcdf4"):
     ds = xr.open_dataset(f"{d}/one.h5", group="spectra/constant_tf1", engine=engine)

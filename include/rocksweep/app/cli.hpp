@@ -20,6 +20,7 @@ struct SweepCommand {
     std::size_t max_chunk = 512;
     double checkpoint_s = 5.0;
     std::size_t refine_stride = 0;  ///< 0: every cell; else boundary refinement from this spacing
+    std::vector<std::string> refine_axes;  ///< the pair refinement works over; empty: amplitude_ratio, omega_ratio
     std::string part;  ///< "K/N": compute only part K of N (a job array); empty: every cell
 };
 
