@@ -4,8 +4,8 @@
 /// spring of another shape, a viscous damper) is a new type and no change to the event stepper
 /// or the batch. The shipped law is Eq. 8's elastic-brittle spring, constant or adaptive
 /// (kernel::Springs, src/physics/springs.hpp, on spring_law.hpp); integrate_cells picks a law
-/// per cell from its AnchorageKind (src/physics/lane.hpp, `Laws`). docs/physics.md, "Anchorage
-/// laws", says how one is added.
+/// per cell from its AnchorageKind (with_law, src/physics/integrator.cpp).
+/// docs/physics_kernel.md, "Anchorage laws", says how one is added.
 ///
 /// An object of the law is one cell's anchorage: built from the cell, it keeps what changes over
 /// the run (a broken spring, the adaptive law's K) and answers for the side the block rocks on
