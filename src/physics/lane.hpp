@@ -1,7 +1,7 @@
 #pragma once
 // One cell's run as a lane of the W-lane kernel, for any anchorage law (anchorage_law.hpp):
 // the cell's state machine (Lane), and the loop that keeps a batch of lanes busy (run_lanes).
-// integrate_cells (integrator.cpp) runs it with the law of each cell's AnchorageKind (Laws).
+// integrate_cells (integrator.cpp) runs it with the law of each cell's AnchorageKind (with_law).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -134,7 +134,7 @@ private:
     }
 
     /// The anchorage law's switches at the current state.
-    void update_stiffness() { law_.follow_law(side_, th_, thd_, in_pulse(), [this] { return ax_ahead(); }); }
+    void follow_law() { law_.follow_law(side_, th_, thd_, in_pulse(), [this] { return ax_ahead(); }); }
     /// The sign of ax over the coming interval, up to the next zero of ax, taken at its middle:
     /// robust at the zeros.
     double ax_ahead() const {
@@ -142,9 +142,10 @@ private:
         return m_.pulse.ax(0.5 * (t_ + tz));
     }
 
-    /// The ground's next zero after t_ (the adaptive law switches there), kept until t_ reaches
-    /// it: time only moves forward, and the first zero after any t in [t_asked, zero) is the same
-    /// one. A record's scan for it was 30 % of a suite's time when asked twice per step.
+    /// The ground's next zero after t_ (a law such as the adaptive one switches there), kept
+    /// until t_ reaches it: time only moves forward, and the first zero after any t in
+    /// [t_asked, zero) is the same one. A record's scan for it was 30 % of a suite's time when
+    /// asked twice per step.
     double next_ax_zero() const {
         if (!(t_ >= zero_asked_ && t_ < zero_)) {
             zero_ = m_.pulse.next_ax_zero(t_);
@@ -233,7 +234,7 @@ private:
             case Event::none: break;
         }
         if (t_ >= set_.t_end_s) return finish(Outcome::safe);
-        update_stiffness();  // at a zero of ax or the end of the pulse
+        follow_law();  // at a zero of ax or the end of the pulse
     }
 
     void note_extremes(double phi) { extremes_.add(phi, law_, side_); }
@@ -259,7 +260,7 @@ private:
         ++r_.impacts;
         thd_ *= m_.e;
         side_ = -side_;
-        update_stiffness();
+        follow_law();
         note_reactions();
         if (!in_pulse() && set_.energy_stop) {
             const FreeFate f = law_.free_fate(side_, std::abs(thd_));
