@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # physics_split.sh OLD_BUILD [NEW_BUILD]: the system / event stepper / observers split of the
-# kernel (issue 8) against another build (default NEW_BUILD: build/ of this tree). A refactor
+# kernel (issue 8), and the anchorage law as a type on it (anchorage_law.hpp), against another
+# build (default NEW_BUILD: build/ of this tree). A refactor
 # that only moves code must give the same bits, and inlining across the new headers must
 # cost nothing; both are measured here rather than assumed.
 #  1. bitwise: the runs below with both builds, h5diff of everything but /provenance. The set

@@ -1,12 +1,14 @@
 #pragma once
 // The W-lane RK4 step of the kernel: one classical RK4 step per lane over a batch of cells, of
 // the equation of motion in system.hpp. Knows the ground only through the families' lane()
-// functions (excitation/*.hpp); where a step ends and what its end means is the event
-// stepper's and the cell's business (event_stepper.hpp, integrator.cpp).
+// functions (excitation/*.hpp) and the anchorage only through its law's term (Law, an
+// AnchorageLaw); where a step ends and what its end means is the event stepper's and the
+// cell's business (event_stepper.hpp, lane.hpp).
 #include <array>
 #include <cstdlib>
 #include <type_traits>
 
+#include "rocksweep/physics/anchorage_law.hpp"
 #include "rocksweep/physics/excitation.hpp"
 #include "rocksweep/physics/fastmath.hpp"
 #include "rocksweep/physics/system.hpp"
@@ -16,19 +18,18 @@ namespace rocksweep::kernel {
 // The lane loop is branch-free so that GCC vectorises it and a lane gives the same bits alone
 // and in a vector: the equation of motion (system.hpp) is written so; sin/cos are
 // rocksweep::fastmath (odd/even bitwise).
-using LaneCoef = rocking::Coef;
 
 /// Per-lane coefficients of one step (as Lane writes them).
+template <AnchorageLaw Law>
 struct RhsLane {
-    double p2, alpha, kappa;
+    double p2, alpha;
+    typename Law::Coef law;  ///< the anchorage law's
     double t_cut;  ///< ground moves at stage times t < t_cut
     int side;
     bool linear;
     const Pulse* pulse = nullptr;  ///< its family and kind
     GroundLane ground;             ///< its family's lane coefficients
 };
-
-inline LaneCoef coef(const RhsLane& l) { return rocking::coef(l.p2, l.alpha, l.kappa, l.side, l.linear); }
 
 /// A batch whose lanes are not all of one vectorised family, or hold different records: each
 /// lane takes its own family's ground, outside the vector loop, with the same lane() as alone.
@@ -37,14 +38,15 @@ struct PerLane {};
 /// One classical RK4 step per lane; y = (theta, theta_dot). The lane loop is branch-free
 /// and vectorised for one analytic family; every lane computes the same operation sequence
 /// as W = 1.
-template <int W>
+template <int W, AnchorageLaw Law>
 struct Batch {
-    std::array<RhsLane, W> c{};  ///< written by Lane::prepare
+    std::array<RhsLane<Law>, W> c{};  ///< written by Lane::prepare
     std::array<double, W> t0{}, y0{}, v0{}, dt{}, y1{}, v1{}, a0{};
 
     /// The coefficients as structure of arrays, and the in-pulse factors of the stage times.
     struct Soa {
-        alignas(64) double p2[W], alpha[W], kappa[W], side[W], linear[W], spring[W];
+        alignas(64) double p2[W], alpha[W], side[W], linear[W];
+        typename Law::template Soa<W> law;
         alignas(64) double ax_g[W], ay_g[W], omega[W], phase[W], phase_y[W], t_ref[W];
         alignas(64) double sample_dt[W];
         alignas(64) int last_segment[W];
@@ -55,9 +57,10 @@ struct Batch {
 
     /// Batch-uniform shortcuts, which give the same bits per lane as the full computation:
     /// no lane in the pulse (every ground value +0), no lane with a vertical component (ay +0),
-    /// no lane with a spring (spring term +0). Lanes of one record (any scales) share its tables.
+    /// no lane where the anchorage acts (its term<false>). Lanes of one record (any scales) share
+    /// its tables.
     void step() {
-        bool any_in = false, any_y = false, any_k = false, mixed = false;
+        bool any_in = false, any_y = false, any_acts = false, mixed = false;
         int first_i = 0;  // the first lane that ever held a cell
         for (int i = W - 1; i >= 0; --i)
             if (c[i].pulse) first_i = i;
@@ -65,9 +68,9 @@ struct Batch {
         k.samples = c[first_i].ground.samples;
         k.samples_y = c[first_i].ground.samples_y;
         for (int i = 0; i < W; ++i) {
-            const LaneCoef l = coef(c[i]);
-            k.p2[i] = l.p2; k.alpha[i] = l.alpha; k.kappa[i] = l.kappa;
-            k.side[i] = l.side; k.linear[i] = l.linear; k.spring[i] = l.spring;
+            const rocking::Coef l = rocking::coef(c[i].p2, c[i].alpha, c[i].side, c[i].linear);
+            k.p2[i] = l.p2; k.alpha[i] = l.alpha; k.side[i] = l.side; k.linear[i] = l.linear;
+            k.law.store(i, c[i].law);
             const GroundLane& g = c[i].ground;
             k.ax_g[i] = g.ax_g; k.ay_g[i] = g.ay_g; k.omega[i] = g.omega;
             k.phase[i] = g.phase; k.phase_y[i] = g.phase_y; k.t_ref[i] = g.t_ref;
@@ -78,21 +81,21 @@ struct Batch {
             k.in1[i] = t + h < c[i].t_cut ? 1.0 : 0.0;
             any_in |= t < c[i].t_cut;  // dt >= 0: the later stage times are not earlier
             any_y |= g.ay_g != 0.0;
-            any_k |= c[i].kappa != 0.0;
+            any_acts |= Law::acts(c[i].law);
             mixed |= c[i].pulse &&
                      (c[i].pulse->kind != first->kind || g.samples != k.samples || g.samples_y != k.samples_y);
         }
         if (mixed) return lanes<PerLane, true, true, true>(*this, nullptr, nullptr);
         visit(*first, [&](const auto& e) {
             using F = std::decay_t<decltype(e)>;
-            if constexpr (F::vectorised) family<F>(any_in, any_in && any_y, any_k);
+            if constexpr (F::vectorised) family<F>(any_in, any_in && any_y, any_acts);
             else lanes<PerLane, true, true, true>(*this, nullptr, nullptr);
         });
     }
 
     template <class F>
-    void family(bool in, bool y, bool spring) {
-        switch ((in ? 1 : 0) + (y ? 2 : 0) + (spring ? 4 : 0)) {
+    void family(bool in, bool y, bool acts) {
+        switch ((in ? 1 : 0) + (y ? 2 : 0) + (acts ? 4 : 0)) {
             case 0: return run<F, false, false, false>();
             case 1: return run<F, true, false, false>();
             case 3: return run<F, true, true, false>();
@@ -103,10 +106,10 @@ struct Batch {
     }
 
     /// Same operations either way (AVX2 without FMA, -ffp-contract=off): same bits.
-    template <class F, bool pulse, bool with_y, bool spring>
+    template <class F, bool pulse, bool with_y, bool acts>
     void run() {
-        if (use_avx2()) lanes_avx2<F, pulse, with_y, spring>(*this, k.samples, k.samples_y);
-        else lanes<F, pulse, with_y, spring>(*this, k.samples, k.samples_y);
+        if (use_avx2()) lanes_avx2<F, pulse, with_y, acts>(*this, k.samples, k.samples_y);
+        else lanes<F, pulse, with_y, acts>(*this, k.samples, k.samples_y);
     }
 
     static bool use_avx2() {
@@ -133,11 +136,12 @@ struct Batch {
     // __restrict: the lanes' stores do not reach the tables a record's lanes gather from (passed
     // apart: GCC does not carry restrict to a pointer loaded from the batch), so the loop
     // vectorises with them (the same arithmetic, the same bits).
-    template <class F, bool pulse, bool with_y, bool spring>
+    template <class F, bool pulse, bool with_y, bool acts>
     [[gnu::always_inline]] static inline void lanes_body(Batch& __restrict b, const double* __restrict samples,
                                                          const double* __restrict samples_y) {
         for (int i = 0; i < W; ++i) {
-            const LaneCoef l{b.k.p2[i], b.k.alpha[i], b.k.kappa[i], b.k.side[i], b.k.linear[i], b.k.spring[i]};
+            const rocking::Coef l{b.k.p2[i], b.k.alpha[i], b.k.side[i], b.k.linear[i]};
+            const typename Law::Coef lk = b.k.law.load(i);
             GroundLane gl;
             gl.ax_g = b.k.ax_g[i]; gl.ay_g = b.k.ay_g[i]; gl.omega = b.k.omega[i];
             gl.phase = b.k.phase[i]; gl.phase_y = b.k.phase_y[i]; gl.t_ref = b.k.t_ref[i];
@@ -152,33 +156,33 @@ struct Batch {
                 g1 = b.template ground<F, with_y>(i, gl, t + h, b.k.in1[i]);
             }
             // k1 = f(t, y)
-            const double k1y = v, k1v = rocking::theta_ddot<spring>(l, g0, y);
+            const double k1y = v, k1v = rocking::theta_ddot<Law, acts>(l, lk, g0, y, k1y);
             // k2 = f(t + h/2, y + h/2 k1)
-            const double k2y = v + 0.5 * h * k1v, k2v = rocking::theta_ddot<spring>(l, gm, y + 0.5 * h * k1y);
+            const double k2y = v + 0.5 * h * k1v, k2v = rocking::theta_ddot<Law, acts>(l, lk, gm, y + 0.5 * h * k1y, k2y);
             // k3 = f(t + h/2, y + h/2 k2)
-            const double k3y = v + 0.5 * h * k2v, k3v = rocking::theta_ddot<spring>(l, gm, y + 0.5 * h * k2y);
+            const double k3y = v + 0.5 * h * k2v, k3v = rocking::theta_ddot<Law, acts>(l, lk, gm, y + 0.5 * h * k2y, k3y);
             // k4 = f(t + h, y + h k3)
-            const double k4y = v + h * k3v, k4v = rocking::theta_ddot<spring>(l, g1, y + h * k3y);
+            const double k4y = v + h * k3v, k4v = rocking::theta_ddot<Law, acts>(l, lk, g1, y + h * k3y, k4y);
             b.y1[i] = y + h / 6.0 * (k1y + 2.0 * k2y + 2.0 * k3y + k4y);
             b.v1[i] = v + h / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
             b.a0[i] = k1v;
         }
     }
-    template <class F, bool pulse, bool with_y, bool spring>
+    template <class F, bool pulse, bool with_y, bool acts>
     static void lanes(Batch& __restrict b, const double* __restrict xs, const double* __restrict ys) {
-        lanes_body<F, pulse, with_y, spring>(b, xs, ys);
+        lanes_body<F, pulse, with_y, acts>(b, xs, ys);
     }
     // The same loop compiled for AVX2 (no FMA: the bits stay those of the baseline build).
 #if defined(__x86_64__) || defined(__i386__)
-    template <class F, bool pulse, bool with_y, bool spring>
+    template <class F, bool pulse, bool with_y, bool acts>
     __attribute__((target("avx2"))) static void lanes_avx2(Batch& __restrict b, const double* __restrict xs,
                                                            const double* __restrict ys) {
-        lanes_body<F, pulse, with_y, spring>(b, xs, ys);
+        lanes_body<F, pulse, with_y, acts>(b, xs, ys);
     }
 #else
-    template <class F, bool pulse, bool with_y, bool spring>
+    template <class F, bool pulse, bool with_y, bool acts>
     static void lanes_avx2(Batch& __restrict b, const double* __restrict xs, const double* __restrict ys) {
-        lanes_body<F, pulse, with_y, spring>(b, xs, ys);
+        lanes_body<F, pulse, with_y, acts>(b, xs, ys);
     }
 #endif
 };

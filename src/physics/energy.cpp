@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "rocksweep/physics/fastmath.hpp"
-#include "rocksweep/physics/system.hpp"
+#include "rocksweep/physics/spring_law.hpp"
 
 namespace rocksweep {
 
@@ -16,7 +16,9 @@ bool linear(const CellModel& m) { return m.equations == Equations::linearised; }
 /// ground at rest, -theta'' at theta = phi > 0. With the C library's sine, as this was defined
 /// (first_maximum's bisection ends on its last bits).
 double potential_slope(const CellModel& m, double kappa, double phi) {
-    return -rocking::theta_ddot<true, rocking::LibmTrig>(rocking::coef(m.p2, m.alpha, kappa, 1, linear(m)), Ground{}, phi);
+    using rocking::SpringLaw;
+    return -rocking::theta_ddot<SpringLaw, true, rocking::LibmTrig>(rocking::coef(m.p2, m.alpha, 1, linear(m)),
+                                                                    SpringLaw::coef(kappa), Ground{}, phi, 0.0);
 }
 
 double potential(const CellModel& m, double kappa, double phi) {
@@ -34,7 +36,7 @@ void potential_and_slope(const CellModel& m, double kappa, double phi, double& v
     // Gravity's slope p^2 sin(alpha - phi) is potential_slope's, from the sines V needs anyway.
     double sa, ca, vs, moment;
     fastmath::sincos(m.alpha - phi, sa, ca);
-    rocking::spring_potential_and_moment(kappa, phi, vs, moment);
+    rocking::SpringLaw::potential_and_moment(kappa, phi, vs, moment);
     v = m.p2 * (ca - m.cos_alpha) + vs;
     dv = m.p2 * sa + moment;
 }
@@ -47,7 +49,7 @@ double gravity_potential(const CellModel& m, double phi) {
 }
 
 double spring_potential(const CellModel& m, double kappa, double phi) {
-    return rocking::spring_potential(kappa, phi, linear(m));
+    return rocking::SpringLaw::potential(kappa, phi, linear(m));
 }
 
 namespace {
@@ -128,7 +130,7 @@ Works step_works(const CellModel& m, double k_n_m, const StepEnds& step, double 
         const double phi = std::abs(th), sgn = th > 0.0 ? 1.0 : (th < 0.0 ? -1.0 : 0.0);
         const double ax = tn < t_end ? m.pulse.ax(tn) : 0.0;
         w.excitation_j += wt[i] * (-m.mass_kg * ax * m.gravity * m.radius_m * std::cos(m.alpha - phi) * thd);
-        w.anchorage_j += wt[i] * (-rocking::anchorage_moment_nm(b, k_n_m, phi) * sgn * thd);
+        w.anchorage_j += wt[i] * (-rocking::SpringLaw::moment_nm(b, k_n_m, phi) * sgn * thd);
     }
     w.excitation_j *= 0.5 * h;
     w.anchorage_j *= 0.5 * h;
@@ -155,7 +157,7 @@ FreeFate free_fate(const CellModel& m, int side, double v, bool left_intact, boo
         const Swing sw = outward_swing(m, ke, k_out, k_in, brk);
         if (!sw.bounded) return f;
         f.max_phi = std::max(f.max_phi, sw.peak);
-        f.peak_force = std::max(f.peak_force, rocking::spring_force_ratio(fcoef, sw.peak));
+        f.peak_force = std::max(f.peak_force, rocking::SpringLaw::force_ratio(fcoef, sw.peak));
         const double v_ret = std::sqrt(2.0 * sw.ke_return);
         ++f.impacts_total;
         if (v_ret < m.v_threshold) {

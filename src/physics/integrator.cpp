@@ -1,16 +1,9 @@
 #include "rocksweep/physics/integrator.hpp"
 
-#include <algorithm>
-#include <array>
-#include <cmath>
-#include <optional>
 #include <stdexcept>
+#include <type_traits>
 
-#include "rocksweep/physics/energy.hpp"
-#include "batch.hpp"
-#include "event_stepper.hpp"
-#include "observers.hpp"
-#include "rocking_events.hpp"
+#include "lane.hpp"
 #include "springs.hpp"
 
 namespace rocksweep {
@@ -29,337 +22,35 @@ std::string to_string(Outcome o) {
 
 namespace {
 
-using kernel::Batch;
-using kernel::Event;
-using kernel::EventStepper;
-using kernel::Extremes;
-using kernel::FrictionDemand;
-using kernel::hermite_peak;
-using kernel::HistoryRecorder;
-using kernel::RhsLane;
-using kernel::RockingEvents;
-using kernel::Springs;
-
-/// One cell's life: at rest, rocking, finished. It prepares each trial step of its lane, hands
-/// the step's end to the event stepper with its event functions, and applies what happened at
-/// an accepted end (impact, fracture, switch, overturning, the energy decision). The physics
-/// is the system's (system.hpp, springs.hpp); the figures of the result are the observers'.
-class Lane {
-public:
-    Lane(const CellModel& m, const IntegratorSettings& s, const StepObserver* obs)
-        : m_(m), set_(s), springs_(m), extremes_(springs_.anchored()) {
-        if (obs) history_.emplace(m, *obs);
-        t_pulse_end_ = m.pulse.end_time();
-        ground_ = visit(m.pulse, [](const auto& e) { return e.lane_coefficients(); });
-        h_ = set_.method == Method::paper ? set_.paper_dt_s
-                                          : 2.0 * M_PI / (m.omega_max() * set_.steps_per_period);
-        r_.t_overturn_s = NAN;
-        if (m.theta0 != 0.0 || m.theta_dot0 != 0.0) start_moving();
+/// The anchorage law each kind of anchorage runs (anchorage_law.hpp): f(std::type_identity<Law>).
+/// A new law is registered here, with its AnchorageKind (anchorage.hpp).
+template <class F>
+decltype(auto) with_law(AnchorageKind kind, F&& f) {
+    switch (kind) {
+        case AnchorageKind::free:
+        case AnchorageKind::constant:
+        case AnchorageKind::adaptive: return f(std::type_identity<kernel::Springs>{});
     }
+    throw std::logic_error("integrate_cells: an anchorage kind without a law");
+}
 
-    CellResult result() const {
-        CellResult r = r_;
-        r.max_rotation = extremes_.max_phi() / m_.alpha;
-        r.peak_force_ratio = extremes_.peak_force();
-        r.broken = springs_.broken_bits();
-        r.mu_required = demand_.mu_required();
-        r.pivot_uplift = demand_.pivot_uplift() ? 1 : 0;
-        return r;
-    }
-
-    /// Sets up the next trial step in lane i of the batch; advances a block at rest first.
-    /// Returns false when the cell has finished.
-    template <int W>
-    bool prepare(Batch<W>& b, int i) {
-        while (!done_ && side_ == 0) leave_rest();
-        if (done_) return false;
-        if (r_.steps >= set_.max_steps) {
-            finish(Outcome::not_converged);
-            return false;
-        }
-        RhsLane& c = b.c[i];
-        c.p2 = m_.p2;
-        c.alpha = m_.alpha;
-        c.kappa = springs_.kappa(side_);
-        c.pulse = &m_.pulse;
-        c.ground = ground_;
-        c.linear = m_.equations == Equations::linearised;
-        c.side = side_;
-        b.t0[i] = t_;
-        b.y0[i] = th_;
-        b.v0[i] = thd_;
-        if (set_.method == Method::paper) {
-            c.t_cut = t_pulse_end_;  // the ground stops mid-step, as in a fixed-step code
-            // Only the end of a record cuts a step short.
-            clipped_ = set_.t_end_s - t_ <= h_;
-            b.dt[i] = clipped_ ? set_.t_end_s - t_ : h_;
-        } else if (stepper_.searching()) {
-            c.t_cut = in_pulse() ? INFINITY : -INFINITY;
-            b.dt[i] = stepper_.trial();
-        } else {
-            c.t_cut = in_pulse() ? INFINITY : -INFINITY;
-            boundary_ = next_boundary();
-            clipped_ = boundary_ - t_ <= h_;
-            b.dt[i] = clipped_ ? boundary_ - t_ : h_;
-        }
-        return true;
-    }
-
-    template <int W>
-    void finish_step(const Batch<W>& b, int i) {
-        ++r_.steps;
-        if (set_.method == Method::paper) return paper_step(b.dt[i], b.y1[i], b.v1[i], b.a0[i]);
-        const double a0 = b.a0[i];
-        stepper_.finish(RockingEvents{springs_, side_, th_, thd_, in_pulse()}, t_, th_, thd_, b.dt[i], b.y1[i], b.v1[i],
-                        [&](double dt, double y1, double v1, Event e, bool interior) { accept(dt, y1, v1, a0, e, interior); });
-    }
-
-private:
-    const CellModel& m_;
-    const IntegratorSettings& set_;
-    double t_ = 0.0, th_ = 0.0, thd_ = 0.0;
-    int side_ = 0;  ///< +1: rocking with theta > 0; -1: theta < 0; 0: at rest
-    mutable double zero_asked_ = INFINITY, zero_ = -INFINITY;  ///< next_ax_zero's cache: asked at, answer
-    bool done_ = false;
-    double t_pulse_end_, h_;
-    GroundLane ground_;  ///< the pulse's coefficients in the lane loop
-    double boundary_ = INFINITY;
-    bool clipped_ = false;  ///< the prepared step ends on boundary_ (or the paper's t_end)
-    std::int64_t scans_ = 0;  ///< ground samples scanned outside RK4 steps (rest, uplift)
-    CellResult r_{};
-    Springs springs_;
-    EventStepper stepper_;
-    // observers
-    Extremes extremes_;
-    FrictionDemand demand_;
-    std::optional<HistoryRecorder> history_;
-
-    bool in_pulse() const { return t_ < t_pulse_end_; }
-
-    double next_boundary() const {
-        double b = set_.t_end_s;
-        if (in_pulse()) {
-            b = std::min(b, t_pulse_end_);
-            if (springs_.adaptive()) b = std::min(b, next_ax_zero());
-            // Where the ground stops being smooth (a record's samples) steps end, so the error
-            // stays that of a smooth right-hand side.
-            b = std::min(b, m_.pulse.next_kink(t_));
-        }
-        return b;
-    }
-
-    void finish(Outcome o) {
-        r_.outcome = o;
-        done_ = true;
-    }
-
-    /// The adaptive law at the current state.
-    void update_stiffness() { springs_.follow_law(side_, th_, thd_, in_pulse(), [this] { return ax_ahead(); }); }
-    /// The sign of ax over the coming interval, up to the next zero of ax, taken at its middle:
-    /// robust at the zeros.
-    double ax_ahead() const {
-        const double tz = std::min({next_ax_zero(), t_pulse_end_, t_ + h_});
-        return m_.pulse.ax(0.5 * (t_ + tz));
-    }
-
-    /// The ground's next zero after t_ (the adaptive law switches there), kept until t_ reaches
-    /// it: time only moves forward, and the first zero after any t in [t_asked, zero) is the same
-    /// one. A record's scan for it was 30 % of a suite's time when asked twice per step.
-    double next_ax_zero() const {
-        if (!(t_ >= zero_asked_ && t_ < zero_)) {
-            zero_ = m_.pulse.next_ax_zero(t_);
-            zero_asked_ = t_;
-        }
-        return zero_;
-    }
-
-    void note_reactions() {
-        demand_.rocking(m_, t_, in_pulse(), side_, springs_, th_, thd_);
-    }
-
-    /// One ground sample scanned outside the RK4 steps (uplift search, friction demand at rest),
-    /// counted against the step cap with the steps: a scan that cannot progress (omega_p so
-    /// large that t + T/512 == t, or NaN) ends as not_converged within the cap like any runaway
-    /// cell. A stop request is honoured here too, as between batch steps. False: out of budget.
-    bool charge() {
-        ++scans_;
-        if ((scans_ & 4095) == 0 && set_.stop_requested && set_.stop_requested()) throw Interrupted();
-        if (r_.steps + scans_ < set_.max_steps) return true;
-        finish(Outcome::not_converged);
-        return false;
-    }
-
-    void note_rest_demand(double t0, double t1) {
-        demand_.at_rest(m_.pulse, t_pulse_end_, t0, t1, [this] { return charge(); });
-    }
-
-    /// From rest: wait for the ground to lift a corner (Eq. 1), or finish safe.
-    void leave_rest() {
-        const double tu = in_pulse() ? next_uplift(t_, std::min(t_pulse_end_, set_.t_end_s)) : INFINITY;
-        if (done_) return;
-        if (!std::isfinite(tu)) {
-            const double t_stop = std::min(std::max(t_, t_pulse_end_), set_.t_end_s);
-            note_rest_demand(t_, t_stop);
-            if (done_) return;
-            observe_rest(t_stop);
-            t_ = t_stop;
-            finish(Outcome::safe);
-            return;
-        }
-        note_rest_demand(t_, tu);
-        if (done_) return;
-        observe_rest(tu);
-        t_ = tu;
-        th_ = thd_ = 0.0;
-        side_ = m_.pulse.ax(tu) > 0.0 ? -1 : 1;  // positive ground acceleration tips to theta < 0
-        springs_.at_uplift();
-    }
-
-    /// A run from a state other than rest (basins of attraction): already rocking, so the
-    /// uplift test of leave_rest never applies. The side is theta0's sign, or theta_dot0's
-    /// when theta0 = 0.
-    void start_moving() {
-        th_ = m_.theta0;
-        thd_ = m_.theta_dot0;
-        side_ = (th_ != 0.0 ? th_ : thd_) > 0.0 ? 1 : -1;
-        springs_.at_start(side_, th_, thd_, in_pulse(), [this] { return ax_ahead(); });
-    }
-
-    /// First time in [t, t_stop) at which the block uplifts, or +inf.
-    double next_uplift(double t, double t_stop) {
-        if (m_.uplifts(t)) return t;
-        if (m_.never_uplifts()) return INFINITY;  // decided without integrating
-        return m_.pulse.first_uplift(t, t_stop, [this](double x) { return m_.uplifts(x); }, [this] { return charge(); });
-    }
-
-    /// Takes the state at t + dt as the new state and applies what happened there (the event
-    /// stepper's verdict; interior: a step cut at an in-step turning point).
-    void accept(double dt, double y1, double v1, double a0, Event e, bool interior) {
-        const double t0 = t_, y0 = th_, v0 = thd_;
-        const double t1 = (e == Event::none && clipped_ && !interior) ? boundary_ : t_ + dt;
-        // A turning point inside the step (one that reaches the fracture angle was located).
-        if (side_ * v0 > 0.0 && side_ * v1 < 0.0) note_extremes(side_ * hermite_peak(dt, y0, v0, y1, v1));
-        note_extremes(std::min(side_ * y1, M_PI / 2));
-        if (history_) history_->step(t0, y0, v0, a0, t1, y1, v1, side_, springs_, r_.impacts);
-        t_ = t1;
-        th_ = y1;
-        thd_ = v1;
-        note_reactions();  // just before the event: an impact's approach speed is the larger
-        switch (e) {
-            case Event::overturn: return overturn();
-            case Event::fracture: return springs_.fracture(side_);
-            case Event::impact: return impact();
-            case Event::turn: return springs_.at_turn(side_, th_);
-            case Event::none: break;
-        }
-        if (t_ >= set_.t_end_s) return finish(Outcome::safe);
-        update_stiffness();  // at a zero of ax or the end of the pulse
-    }
-
-    void note_extremes(double phi) { extremes_.add(phi, springs_, side_); }
-
-    void overturn() {
-        r_.t_overturn_s = t_;
-        extremes_.overturned();
-        finish(r_.impacts_total > 0 ? Outcome::overturned_impact : Outcome::overturned_no_impact);
-    }
-
-    void impact() {
-        const double approach = std::abs(thd_);
-        ++r_.impacts_total;
-        th_ = 0.0;
-        demand_.reset();
-        if (approach < m_.v_threshold) {
-            // The block is settling: the remaining impacts pile up in a time of order
-            // 2 v / (p^2 alpha (1 - e)). Take it as at rest (physics.md §5).
-            thd_ = 0.0;
-            side_ = 0;
-            return;
-        }
-        ++r_.impacts;
-        thd_ *= m_.e;
-        side_ = -side_;
-        update_stiffness();
-        note_reactions();
-        if (!in_pulse() && set_.energy_stop) {
-            const FreeFate f = free_fate(m_, side_, std::abs(thd_), !springs_.broken(1), !springs_.broken(-1));
-            if (f.decided) {
-                extremes_.add_decided(f.max_phi, f.peak_force, springs_.anchored());
-                r_.impacts += f.impacts;
-                r_.impacts_total += f.impacts_total;
-                finish(Outcome::safe);
-            }
-        }
-    }
-
-    /// The paper's scheme (Section 3.2): fixed dt, checks at the end of the step only, the
-    /// adaptive law one step behind.
-    void paper_step(double dt, double y1, double v1, double a0) {
-        const double t0 = t_, y0 = th_, v0 = thd_;
-        const double t1 = clipped_ ? set_.t_end_s : t_ + dt;
-        note_extremes(std::min(side_ * y1, M_PI / 2));
-        if (history_) history_->step(t0, y0, v0, a0, t1, y1, v1, side_, springs_, r_.impacts);
-        t_ = t1;
-        th_ = y1;
-        thd_ = v1;
-        note_reactions();
-        if (side_ * y1 >= M_PI / 2) return overturn();
-        if (springs_.intact(side_) && side_ * y1 >= springs_.break_angle()) springs_.fracture(side_);
-        if (side_ * y1 < 0.0) {
-            impact();
-            if (done_ || side_ == 0) return;
-        }
-        springs_.follow_law_lagged(side_, th_, y0, in_pulse(), [&] { return m_.pulse.ax(t_); });
-        if (t_ >= set_.t_end_s) finish(Outcome::safe);
-    }
-
-    /// A block at rest until time t, for histories.
-    void observe_rest(double t1) {
-        if (history_ && t1 > t_) history_->step(t_, 0.0, 0.0, 0.0, t1, 0.0, 0.0, side_, springs_, r_.impacts);
-    }
-};
+bool same_law(AnchorageKind a, AnchorageKind b) {
+    return with_law(a, [&](auto la) {
+        return with_law(b, [&](auto lb) { return std::is_same_v<decltype(la), decltype(lb)>; });
+    });
+}
 
 template <int W>
-void run_lanes(std::span<const CellModel> cells, std::span<CellResult> results,
-               const IntegratorSettings& settings, const StepObserver* obs, BatchStats* stats = nullptr) {
-    Batch<W> b;
-    std::array<std::optional<Lane>, W> lane;
-    std::array<std::size_t, W> index{};
-    std::size_t next = 0;
-    int live = 0;
-    auto refill = [&](int i) {
-        // A finished lane takes the next cell at once, so that lanes stay busy.
-        while (next < cells.size()) {
-            lane[i].emplace(cells[next], settings, obs);
-            index[i] = next++;
-            if (lane[i]->prepare(b, i)) return true;
-            results[index[i]] = lane[i]->result();
-        }
-        lane[i].reset();
-        return false;
-    };
-    for (int i = 0; i < W; ++i) live += refill(i) ? 1 : 0;
-    // A stop request is honoured within ~256 batch steps, even inside one slow cell.
-    std::uint32_t until_poll = 256;
-    while (live > 0) {
-        if (settings.stop_requested && --until_poll == 0) {
-            until_poll = 256;
-            if (settings.stop_requested()) throw Interrupted();
-        }
-        for (int i = 0; i < W; ++i)
-            if (!lane[i]) b.dt[i] = 0.0;  // idle lane: a harmless zero step
-        b.step();
-        if (stats) {
-            ++stats->batch_steps;
-            stats->busy_lane_steps += live;
-        }
-        for (int i = 0; i < W; ++i) {
-            if (!lane[i]) continue;
-            lane[i]->finish_step(b, i);
-            if (lane[i]->prepare(b, i)) continue;
-            results[index[i]] = lane[i]->result();
-            if (!refill(i)) --live;
-        }
+void run_cells(std::span<const CellModel> cells, std::span<CellResult> results, const IntegratorSettings& settings,
+               const StepObserver* obs, BatchStats* stats = nullptr) {
+    // Each stretch of cells that share a law is one batch run: with one law, the whole span.
+    for (std::size_t i = 0; i < cells.size();) {
+        std::size_t j = i + 1;
+        while (j < cells.size() && same_law(cells[i].anchorage, cells[j].anchorage)) ++j;
+        with_law(cells[i].anchorage, [&]<class Law>(std::type_identity<Law>) {
+            kernel::run_lanes<W, Law>(cells.subspan(i, j - i), results.subspan(i, j - i), settings, obs, stats);
+        });
+        i = j;
     }
 }
 
@@ -370,17 +61,17 @@ void integrate_cells(std::span<const CellModel> cells, std::span<CellResult> res
     if (results.size() != cells.size()) throw std::invalid_argument("integrate_cells: size mismatch");
     if (stats) stats->lanes = lanes;
     switch (lanes) {
-        case 1: return run_lanes<1>(cells, results, settings, nullptr, stats);
-        case 4: return run_lanes<4>(cells, results, settings, nullptr, stats);
-        case 8: return run_lanes<8>(cells, results, settings, nullptr, stats);
-        case 16: return run_lanes<16>(cells, results, settings, nullptr, stats);
+        case 1: return run_cells<1>(cells, results, settings, nullptr, stats);
+        case 4: return run_cells<4>(cells, results, settings, nullptr, stats);
+        case 8: return run_cells<8>(cells, results, settings, nullptr, stats);
+        case 16: return run_cells<16>(cells, results, settings, nullptr, stats);
         default: throw std::invalid_argument("integrate_cells: lanes must be 1, 4, 8 or 16");
     }
 }
 
 CellResult integrate_cell(const CellModel& cell, const IntegratorSettings& settings, const StepObserver& observer) {
     CellResult r;
-    run_lanes<1>(std::span<const CellModel>(&cell, 1), std::span<CellResult>(&r, 1), settings,
+    run_cells<1>(std::span<const CellModel>(&cell, 1), std::span<CellResult>(&r, 1), settings,
                  observer ? &observer : nullptr);
     return r;
 }

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "rocksweep/physics/fastmath.hpp"
-#include "rocksweep/physics/system.hpp"
+#include "rocksweep/physics/spring_law.hpp"
 
 namespace rocksweep {
 
@@ -30,16 +30,14 @@ bool CellModel::never_uplifts() const {
 
 double CellModel::omega_max() const {
     // Rocking: the linearised growth rate p, raised by a strong ground motion through the
-    // cos(alpha - theta) term; spring: small-angle frequency sqrt(kappa / 2).
-    double w = std::sqrt(p2 * (1.0 + pulse.peak_ax() + pulse.peak_ay()));
-    w = std::max(w, pulse.time_scale());
-    w = std::max(w, std::sqrt(p2 + 0.5 * kappa_max));
-    return w;
+    // cos(alpha - theta) term. The anchorage law adds its own (AnchorageLaw::omega).
+    const double w = std::sqrt(p2 * (1.0 + pulse.peak_ax() + pulse.peak_ay()));
+    return std::max(w, pulse.time_scale());
 }
 
 double rocking_acceleration(const CellModel& m, int side, double kappa, double ax, double ay, double theta) {
-    return rocking::theta_ddot(rocking::coef(m.p2, m.alpha, kappa, side, m.equations == Equations::linearised),
-                               Ground{ax, ay}, theta);
+    return rocking::theta_ddot<rocking::SpringLaw>(rocking::coef(m.p2, m.alpha, side, m.equations == Equations::linearised),
+                                                   rocking::SpringLaw::coef(kappa), Ground{ax, ay}, theta, 0.0);
 }
 
 BaseReactions base_reactions(const CellModel& m, int side, double kappa, double k_n_m, double ax, double ay,
@@ -52,9 +50,10 @@ BaseReactions base_reactions(const CellModel& m, int side, double kappa, double 
     fastmath::sincos(0.5 * phi, sh, ch);
     const bool lin = m.equations == Equations::linearised;
     // phi'' = s theta'' is theta'' of the mirror image (physics.md §2): side +1 under the
-    // ground (s ax, ay). The equation of motion, fed the sines the kinematics need anyway.
-    const double phidd = rocking::theta_ddot_from(rocking::coef(m.p2, m.alpha, kappa, 1, lin), Ground{s * ax, ay},
-                                                  lin ? m.alpha - phi : sa, lin ? 1.0 : ca, lin ? 0.5 * phi : sh);
+    // ground (s ax, ay). The equation of motion, fed the sines the kinematics need anyway; the
+    // spring's term on side +1 is kappa sin(phi/2) (spring_law.hpp).
+    const double phidd = rocking::theta_ddot_from(rocking::coef(m.p2, m.alpha, 1, lin), Ground{s * ax, ay},
+                                                  lin ? m.alpha - phi : sa, lin ? 1.0 : ca, kappa * (lin ? 0.5 * phi : sh));
     const double w2 = theta_dot * theta_dot, r_g = m.radius_m / m.gravity;
     BaseReactions f;
     f.fx = ax + s * r_g * (ca * phidd + sa * w2);

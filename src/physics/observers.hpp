@@ -5,11 +5,12 @@
 // of them decides anything about the motion; none knows the stepper.
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
-#include "rocksweep/physics/energy.hpp"
+#include "rocksweep/physics/anchorage_law.hpp"
 #include "rocksweep/physics/integrator.hpp"
 #include "rocksweep/physics/model.hpp"
-#include "springs.hpp"
+#include "rocksweep/physics/system.hpp"
 
 namespace rocksweep::kernel {
 
@@ -42,15 +43,16 @@ private:
     int n_ = 0;
 };
 
-/// Max |theta| and the peak force of an intact working spring / F_u. Turning points inside a
+/// Max |theta| and the peak force of an intact working anchorage / F_u. Turning points inside a
 /// step come from the step's interpolant (the stepper locates those that reach the fracture
 /// angle), so an intact spring never reports more than F_u.
 class Extremes {
 public:
     explicit Extremes(bool anchored) : peak_force_(anchored ? 0.0 : NAN) {}
-    void add(double phi, const Springs& springs, int side) {
+    template <AnchorageLaw Law>
+    void add(double phi, const Law& law, int side) {
         max_phi_ = std::max(max_phi_, phi);
-        if (springs.intact(side)) peak_force_ = std::max(peak_force_, springs.force_ratio(phi));
+        if (law.intact(side)) peak_force_ = std::max(peak_force_, law.force_ratio(phi));
     }
     /// What the energy decision found for the rest of the motion.
     void add_decided(double max_phi, double peak_force, bool anchored) {
@@ -68,26 +70,26 @@ private:
 
 /// The friction the base must supply for pure rocking, max |f_x / f_y| (mu_required), and
 /// whether the pivot's vertical reaction went negative (pivot_uplift), physics.md §6.
+template <AnchorageLaw Law>
 class FrictionDemand {
 public:
-    /// A rocking state on side s (Eq. 16-18, base_reactions): checked at every accepted state
+    /// A rocking state on side s (Eq. 16-18, the law's reactions): checked at every accepted state
     /// and just after each impact. In free rocking the demand peaks as the block settles
     /// (phi, phi' -> 0), at (sin a cos a / i) / (1 - sin^2 a / i) with i = I0/(mR^2) >= 1,
     /// below the tan(alpha) that uplift itself needs: the energy decision leaves nothing out.
-    void rocking(const CellModel& m, double t, bool acting, int side, const Springs& springs, double theta,
-                 double theta_dot) {
+    void rocking(const CellModel& m, double t, bool acting, int side, const Law& law, double theta, double theta_dot) {
         const double phi = side * theta;
         // Past alpha the block is beyond its static stability limit: a fall to the ground needs
         // ever more friction (f_y -> 0 as theta_dot grows) and says nothing about survival. A
         // located event at alpha (a spring breaking at theta_f = alpha) lands a rounding past
         // it: that state is still at alpha, and its demand counts.
         if (phi > m.alpha * (1.0 + 1e-9)) return reset();
-        // A spring that breaks or switches makes f_y jump: no parabola across the jump.
-        const double kappa = springs.kappa(side);
-        if (kappa != kappa_) reset();
-        kappa_ = kappa;
+        // An anchorage that breaks or switches makes f_y jump: no parabola across the jump.
+        const typename Law::Coef k = law.coef(side);
+        if (!(coef_ && *coef_ == k)) reset();
+        coef_ = k;
         const double ax = acting ? m.pulse.ax(t) : 0.0, ay = acting ? m.pulse.ay(t) : 0.0;
-        const BaseReactions f = base_reactions(m, side, kappa, springs.k_n_m(side), ax, ay, theta, theta_dot);
+        const BaseReactions f = law.reactions(side, ax, ay, theta, theta_dot);
         const double fx = f.fx, fy = f.fy;
         if (fy <= 0.0) pivot_up_ = true;
         else mu_ = std::max(mu_, demand_.add(t, std::abs(fx) / fy, 1.0));
@@ -121,7 +123,7 @@ private:
     double mu_ = 0.0;
     bool pivot_up_ = false;
     ThreePointExtreme demand_, lift_;  ///< in-step extremes of |f_x / f_y| and f_y
-    double kappa_ = -1.0;              ///< the spring of the points they hold
+    std::optional<typename Law::Coef> coef_;  ///< the anchorage of the points they hold
 };
 
 /// For histories: each accepted step as a StepRecord with the running works (Eq. 23-24) and
@@ -129,25 +131,29 @@ private:
 class HistoryRecorder {
 public:
     HistoryRecorder(const CellModel& m, const StepObserver& obs) : m_(m), obs_(obs), t_pulse_end_(m.pulse.end_time()) {}
-    /// The step from (t0, y0, v0, theta''(t0) = a0) to (t1, y1, v1) on side s with the springs
-    /// as they acted over it; impacts so far.
-    void step(double t0, double y0, double v0, double a0, double t1, double y1, double v1, int side,
-              const Springs& springs, int impacts) {
+    /// The step from (t0, y0, v0, theta''(t0) = a0) to (t1, y1, v1) on side s with the anchorage
+    /// as it acted over it; impacts so far.
+    template <AnchorageLaw Law>
+    void step(double t0, double y0, double v0, double a0, double t1, double y1, double v1, int side, const Law& law,
+              int impacts) {
         StepRecord s{};
         s.t0 = t0; s.theta0 = y0; s.theta_dot0 = v0; s.acc0 = a0;
         s.t1 = t1; s.theta1 = y1; s.theta_dot1 = v1;
         const double ax1 = t1 < t_pulse_end_ || (t1 == t_pulse_end_ && t0 < t1) ? m_.pulse.ax(t1) : 0.0;
         const double ay1 = t1 <= t_pulse_end_ ? m_.pulse.ay(t1) : 0.0;
-        s.acc1 = side == 0 ? 0.0 : rocking_acceleration(m_, side, springs.kappa(side), ax1, ay1, y1);
-        const double k = springs.k_n_m(side);
+        const bool linear = m_.equations == Equations::linearised;
+        s.acc1 = side == 0 ? 0.0
+                           : rocking::theta_ddot<Law>(rocking::coef(m_.p2, m_.alpha, side, linear), law.coef(side),
+                                                      Ground{ax1, ay1}, y1, v1);
+        const double k = law.stiffness_n_m(side);
         s.k_left = side > 0 ? k : 0.0;
         s.k_right = side < 0 ? k : 0.0;
-        const Works w = step_works(m_, k, s, t1);
+        const Works w = law.works(side, s, t1);
         w_exc_ += w.excitation_j;
         w_anch_ += w.anchorage_j;
         s.work_excitation = w_exc_;
         s.work_anchorage = w_anch_;
-        s.switch_energy = springs.switch_energy();
+        s.switch_energy = law.switch_energy();
         s.impacts = impacts;
         obs_(s);
     }

@@ -1,18 +1,19 @@
 #pragma once
 // The event functions of a rocking block (physics.md §3-5), handed to the event stepper for one
-// step: overturning (|theta| = pi/2), fracture of the working spring, impact (theta = 0) and
-// the adaptive law's turning point. Each is positive before its event and <= 0 once it has
-// happened, on the side the step runs on.
+// step: overturning (|theta| = pi/2), impact (theta = 0), and those its anchorage law brings:
+// fracture of the working anchorage and the law's turning point (anchorage_law.hpp). Each is
+// positive before its event and <= 0 once it has happened, on the side the step runs on.
 #include <algorithm>
 #include <cmath>
 
+#include "rocksweep/physics/anchorage_law.hpp"
 #include "event_stepper.hpp"
-#include "springs.hpp"
 
 namespace rocksweep::kernel {
 
+template <AnchorageLaw Law>
 struct RockingEvents {
-    const Springs& springs;
+    const Law& law;
     int side;                   ///< the side the step runs on, +-1
     double theta0, theta_dot0;  ///< the step's start
     bool acting;                ///< the ground moves at the step's start
@@ -21,7 +22,7 @@ struct RockingEvents {
         const double s = side;
         switch (e) {
             case Event::overturn: return M_PI / 2 - s * y;
-            case Event::fracture: return springs.break_angle() - s * y;
+            case Event::fracture: return law.break_angle() - s * y;
             case Event::impact:
                 // theta starts at 0 after an impact or uplift: divide out the trivial root.
                 if (theta0 != 0.0) return s * y;
@@ -40,9 +41,9 @@ struct RockingEvents {
             if (ge < g_min) { g_min = ge; which = e; }
         };
         consider(Event::overturn);
-        if (springs.intact(side)) consider(Event::fracture);
+        if (law.intact(side)) consider(Event::fracture);
         consider(Event::impact);
-        if (springs.turn_armed(side, theta_dot0, acting)) consider(Event::turn);
+        if (law.turn_armed(side, theta_dot0, acting)) consider(Event::turn);
         return which;
     }
 
@@ -52,12 +53,12 @@ struct RockingEvents {
     /// peak's rise above the ends (O(dt^2)), and the RK4 states' own; the located turning point
     /// then decides.
     bool grazes(double dt, double y1, double v1) const {
-        if (!springs.intact(side)) return false;
+        if (!law.intact(side)) return false;
         const double s = side, v0 = theta_dot0, y0 = theta0;
         if (!(s * v0 > 0.0 && s * v1 < 0.0)) return false;
         const double peak = s * hermite_peak(dt, y0, v0, y1, v1);
         const double ends = std::max(s * y0, s * y1);
-        const double brk = springs.break_angle();
+        const double brk = law.break_angle();
         return peak >= brk - (1e-4 * brk + 0.1 * (peak - ends));
     }
 };

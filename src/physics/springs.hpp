@@ -1,21 +1,26 @@
 #pragma once
-// The anchorage of one cell as the kernel runs it (physics.md §4): two elastic-brittle springs,
-// one per base corner, each with its own broken flag, and for the adaptive anchorage which of
-// K_max / K_min acts. The cell's state machine and the event functions ask the anchorage only
-// through this type, so that a new anchorage law is a new type with these members and no
-// change to the event stepper or the RK4 batch.
+// Eq. 8's anchorage of one cell as the kernel runs it (physics.md §4), an AnchorageLaw
+// (anchorage_law.hpp): two elastic-brittle springs, one per base corner, each with its own
+// broken flag, and for the adaptive anchorage which of K_max / K_min acts. Free, constant and
+// adaptive anchorages all run it (a free block's kappa is 0).
 #include <cstdint>
 
+#include "rocksweep/physics/anchorage_law.hpp"
 #include "rocksweep/physics/energy.hpp"
 #include "rocksweep/physics/model.hpp"
 #include "rocksweep/physics/outcome.hpp"
-#include "rocksweep/physics/system.hpp"
+#include "rocksweep/physics/spring_law.hpp"
 
 namespace rocksweep::kernel {
 
-class Springs {
+class Springs : public rocking::SpringLaw {
 public:
     explicit Springs(const CellModel& m) : m_(m) {}
+
+    /// The spring's small-angle frequency sqrt(p^2 + kappa / 2) with K (K_max).
+    static double omega(const CellModel& m) { return std::sqrt(m.p2 + 0.5 * m.kappa_max); }
+    /// The lane's coefficients on `side`.
+    Coef coef(int side) const { return SpringLaw::coef(kappa(side)); }
 
     bool anchored() const { return m_.anchorage != AnchorageKind::free; }
     bool adaptive() const { return m_.anchorage == AnchorageKind::adaptive; }
@@ -27,16 +32,14 @@ public:
         return k_max_ ? m_.kappa_max : m_.kappa_min;
     }
     /// K of the working spring [N/m]; 0 at rest, broken or free.
-    double k_n_m(int side) const {
+    double stiffness_n_m(int side) const {
         if (side == 0 || !intact(side)) return 0.0;
         return k_max_ ? m_.k_max_n_m : m_.k_min_n_m;
     }
     /// |theta| at which the acting stiffness breaks (the scenario's break rule).
     double break_angle() const { return k_max_ ? m_.break_max : m_.break_min; }
     /// F / F_u of the acting stiffness at |theta| = phi.
-    double force_ratio(double phi) const {
-        return rocking::spring_force_ratio(k_max_ ? m_.force_max : m_.force_min, phi);
-    }
+    double force_ratio(double phi) const { return SpringLaw::force_ratio(k_max_ ? m_.force_max : m_.force_min, phi); }
     void fracture(int side) { broken_[side > 0 ? 0 : 1] = true; }
     bool broken(int side) const { return broken_[side > 0 ? 0 : 1]; }
     std::uint8_t broken_bits() const {
@@ -44,6 +47,15 @@ public:
     }
     /// Energy the K_min -> K_max switches put into the spring so far [J].
     double switch_energy() const { return e_switch_; }
+    /// The adaptive law switches where the ground's acceleration changes sign (Eq. 21).
+    bool switches_at_ground_zeros() const { return adaptive(); }
+
+    BaseReactions reactions(int side, double ax, double ay, double theta, double theta_dot) const {
+        return base_reactions(m_, side, kappa(side), stiffness_n_m(side), ax, ay, theta, theta_dot);
+    }
+    Works works(int side, const StepEnds& step, double t) const { return step_works(m_, stiffness_n_m(side), step, t); }
+    /// The energy decision of Eq. 8's potential (energy.hpp), with the springs still intact.
+    FreeFate free_fate(int side, double v) const { return rocksweep::free_fate(m_, side, v, !broken(1), !broken(-1)); }
 
     /// Uplift from rest: ax theta < 0 there, the adaptive law's K_max, and the spring is slack.
     void at_uplift() { k_max_ = true; }
@@ -101,5 +113,7 @@ private:
         k_max_ = kmax;
     }
 };
+
+static_assert(AnchorageLaw<Springs>);
 
 }  // namespace rocksweep::kernel

@@ -9,6 +9,7 @@
 #include <random>
 
 #include "../../src/physics/event_stepper.hpp"
+#include "rocksweep/physics/spring_law.hpp"
 #include "rocksweep/physics/system.hpp"
 
 namespace rocksweep {
@@ -28,9 +29,11 @@ TEST(System, TheMirrorImageIsTheSameEquationToTheBit) {
             const int side = u(rng) > 0.0 ? 1 : -1;
             const double kappa = i % 3 == 0 ? 0.0 : 40.0 * (1.0 + u(rng));
             const double theta = side * 1.5 * std::abs(u(rng)), ax = 3.0 * u(rng), ay = 0.5 * u(rng);
-            const double on_side = rocking::theta_ddot(rocking::coef(p2, alpha, kappa, side, linear), Ground{ax, ay}, theta);
-            const double mirrored =
-                rocking::theta_ddot(rocking::coef(p2, alpha, kappa, 1, linear), Ground{side * ax, ay}, side * theta);
+            const auto k = rocking::SpringLaw::coef(kappa);
+            const double on_side =
+                rocking::theta_ddot<rocking::SpringLaw>(rocking::coef(p2, alpha, side, linear), k, Ground{ax, ay}, theta, 0.0);
+            const double mirrored = rocking::theta_ddot<rocking::SpringLaw>(rocking::coef(p2, alpha, 1, linear), k,
+                                                                            Ground{side * ax, ay}, side * theta, 0.0);
             ASSERT_EQ(bits(side * on_side), bits(mirrored)) << "theta " << theta << " side " << side;
         }
 }
@@ -41,10 +44,11 @@ TEST(System, TheFormsOfTheSpringLawAgreeToRounding) {
     const double kappa = 37.0;
     for (double phi = 0.0; phi <= M_PI / 2; phi += 1e-3) {
         double v, moment;
-        rocking::spring_potential_and_moment(kappa, phi, v, moment);
-        EXPECT_NEAR(moment, kappa * rocking::spring_shape(0.5 * phi, 0.0, 1.0), 4e-16 * kappa);
-        EXPECT_NEAR(moment, kappa * rocking::spring_shape<rocking::LibmTrig>(0.5 * phi, 0.0, 1.0), 4e-16 * kappa);
-        EXPECT_NEAR(v, rocking::spring_potential(kappa, phi, false), 4e-16 * kappa);
+        using rocking::SpringLaw;
+        SpringLaw::potential_and_moment(kappa, phi, v, moment);
+        EXPECT_NEAR(moment, kappa * SpringLaw::shape(0.5 * phi, 0.0, 1.0), 4e-16 * kappa);
+        EXPECT_NEAR(moment, kappa * SpringLaw::shape<rocking::LibmTrig>(0.5 * phi, 0.0, 1.0), 4e-16 * kappa);
+        EXPECT_NEAR(v, SpringLaw::potential(kappa, phi, false), 4e-16 * kappa);
         EXPECT_NEAR(v, 2.0 * kappa * (1.0 - std::cos(0.5 * phi)), 1e-13 * kappa);
     }
 }

@@ -6,15 +6,15 @@
 
 namespace rocksweep {
 
-/// Accuracy defaults of a single history (`simulate`), chosen from measurement (physics.md,
-/// Numerics): a history should overlay a reference, and one run is cheap. Against 4096 steps
-/// per period with threshold 1e-9 p alpha, the largest |theta| error over the samples was, at
-/// 384 steps and 1e-4: 2e-11 rad on the paper's sample case (free, constant, adaptive), 1.7e-9,
-/// 1.5e-9 and 5.1e-9 rad on El Centro (free, constant, adaptive), 3.7e-10 and 1.5e-9 rad on
-/// Sylmar (free, adaptive), outcomes equal. 320 steps gave 1.2e-8 rad (El Centro, adaptive);
-/// a threshold of 1e-3 leaves up to 3.7e-8 rad from settling early. Sweeps keep
-/// IntegratorSettings' 48 and make_cell_model's 1e-3. Used only where the user gave neither
-/// --steps-per-period nor --impact-threshold.
+/// Accuracy defaults of a single history (`simulate`), chosen from measurement (physics_kernel.md,
+/// Numerics): a history should overlay a reference, and one run is cheap. Against 4096 steps per
+/// period with threshold 1e-9 p alpha, the largest |theta| error over the samples was, at 384 steps
+/// and 1e-4: 2e-11 rad on the paper's sample case (free, constant, adaptive), 1.7e-9, 1.5e-9 and
+/// 5.1e-9 rad on El Centro (free, constant, adaptive), 3.7e-10 and 1.5e-9 rad on Sylmar (free,
+/// adaptive), outcomes equal. 320 steps gave 1.2e-8 rad (El Centro, adaptive); a threshold of 1e-3
+/// leaves up to 3.7e-8 rad from settling early. Sweeps keep IntegratorSettings' 48 and
+/// make_cell_model's 1e-3. Used only where the user gave neither --steps-per-period nor
+/// --impact-threshold.
 struct HistoryDefaults {
     double steps_per_period;  ///< IntegratorSettings::steps_per_period
     double impact_threshold;  ///< settling threshold / (p alpha), make_cell_model's argument

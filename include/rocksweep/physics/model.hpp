@@ -41,12 +41,14 @@ struct CellModel {
     bool uplifts(double t) const;
     /// True if no time of the pulse can satisfy Eq. 1: |ax| <= (1 - |ay|) threshold throughout.
     bool never_uplifts() const;
-    /// Fastest time scale of the cell [rad/s]: pulse, rocking, spring.
+    /// Fastest time scale of the cell's ground and rocking [rad/s] (the kernel takes the larger
+    /// of this and its anchorage law's).
     double omega_max() const;
 };
 
-/// Right-hand side theta'' [rad/s^2] for a cell on side s (+1: theta > 0) with anchorage
-/// coefficient kappa, ground accelerations ax, ay [g]: the kernel's equation (system.hpp).
+/// Right-hand side theta'' [rad/s^2] for a cell on side s (+1: theta > 0) with Eq. 8's spring of
+/// coefficient kappa, ground accelerations ax, ay [g]: the kernel's equation (system.hpp) under
+/// its spring law (spring_law.hpp).
 double rocking_acceleration(const CellModel& m, int side, double kappa, double ax, double ay,
                             double theta);
 
