@@ -494,7 +494,7 @@ private:
     /// step in time from that state onto the level (error O(eps^3) in time, O(eps^2) in omega,
     /// eps the interpolant's miss). Falls back to the full search (false) when the correction
     /// is not small or another event would come first.
-    bool locate_newton(double H, double ghi, double Y1, double V1, double& d_out, double& y_out, double& v_out, Ev& which) {
+    bool locate_newton(double H, double Y1, double V1, double& d_out, double& y_out, double& v_out, Ev& which) {
         const double y0 = th_, v0 = om_, s = side_;
         double gdummy;
         const Ev e = earliest(H, Y1, V1, y0, v0, gdummy);
@@ -636,7 +636,7 @@ private:
         } else {
             double dn, yn, vn;
             Ev en;
-            if (newton_ && locate_newton(d, g, y1, v1, dn, yn, vn, en)) {
+            if (newton_ && locate_newton(d, y1, v1, dn, yn, vn, en)) {
                 d = dn, y1 = yn, v1 = vn, e = en;
             } else {
                 d = locate(none, d, g, y1, v1);
