@@ -1,7 +1,7 @@
 #pragma once
 // The event stepper: decides where an RK4 step ends. It sees a trial step's end and the event
 // functions the cell hands it; when one has reached zero it locates the earliest root inside
-// the step by re-run RK4 steps from the same start (docs/physics.md, "Numerics"), so that the
+// the step by re-run RK4 steps from the same start (docs/physics_kernel.md, "Numerics"), so that the
 // state at an event carries the RK4 local error only and the global error stays fourth order
 // through impacts. The first re-run goes to the root on the step's cubic Hermite interpolant,
 // O(dt^4) from the true one, and the next ones bracket it from there: a search takes ~4 re-run

@@ -1,4 +1,4 @@
-// The accuracy defaults of a single history (kHistoryDefaults, physics.md Numerics): a default
+// The accuracy defaults of a single history (kHistoryDefaults, physics_kernel.md, "Numerics"): a default
 // history overlays a tight reference to 1e-8 rad, where the sweep's defaults do not.
 #include <gtest/gtest.h>
 
