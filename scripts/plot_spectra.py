@@ -196,9 +196,17 @@ class Panel:
             self.p = math.sqrt(a["gravity_m_s2"] / (a["inertia_ratio"] * radius))
 
 
+def value_words(S, name, i):
+    """'R = 2.8 m', or for a coded axis (pulse_family) the name of its code: 'ricker pulses'."""
+    attrs = S.get("axis_attrs", {}).get(name, {})
+    if "flag_meanings" in attrs:
+        meaning = dict(zip(np.atleast_1d(attrs["flag_values"]).tolist(), attrs["flag_meanings"].split()))
+        return "{} pulses".format(meaning.get(float(S[name][i]), S[name][i]))
+    return "{} = {:.4g}{}".format(AXIS_SYMBOLS.get(name, name), S[name][i], AXIS_UNITS.get(name, ""))
+
+
 def point_words(S, at):
-    return ", ".join("{} = {:.4g}{}".format(AXIS_SYMBOLS.get(n, n), S[n][i], AXIS_UNITS.get(n, ""))
-                     for n, i in zip(S["axes"][:-2], at))
+    return ", ".join(value_words(S, n, i) for n, i in zip(S["axes"][:-2], at))
 
 
 AXIS_SYMBOLS = {"phase_rad": "ψ", "vertical_g": "a_v0/g", "vertical_phase_rad": "ψ_v", "restitution": "e",
@@ -239,7 +247,7 @@ def panels_of(S, names, at, across):
     out = []
     for nm, title in zip(names, scenario_titles(S, names)):
         for pt in points:
-            words = "{} = {:.4g}{}".format(AXIS_SYMBOLS[across], S[across][pt[k]], AXIS_UNITS.get(across, "")) if across else ""
+            words = value_words(S, across, pt[k]) if across else ""
             text = words if len(names) == 1 and across else title + ("\n" + words if words else "")
             out.append(Panel(S, nm, tuple(pt), text))
     return out
@@ -286,10 +294,13 @@ def header(S, what):
     cycles = a.get("pulse_cycles")
     if family in ("n-sine", "cycloidal-c") and cycles:
         family += " (n = {})".format(int(cycles))
-    head = "{}: {}, {} pulses\n{}".format(
+    pulses = "{} pulses".format(family)
+    if "pulse_family" in S.get("axes", []):  # each panel or point names its own
+        pulses = "pulse families" + (" (n = {})".format(int(cycles)) if cycles and cycles > 1 else "")
+    head = "{}: {}, {}\n{}".format(
         "Overturning spectra" if what == "outcome" else "Spectra",
         what,
-        family,
+        pulses,
         rsplot.block_words(a.get("half_width_m"), a.get("half_height_m"), a.get("alpha_rad"), a.get("p_rad_s")),
     )
     if a.get("complete") != 1:

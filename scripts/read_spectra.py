@@ -9,6 +9,8 @@ As a module:
                                                #   any parameter axes (sweep --axis)
     S["amplitude_ratio"], S["omega_ratio"]     # each axis, 1-D
     S["attrs"], S["provenance"]                # root and /provenance attributes (str, numbers)
+    S["axis_attrs"]["pulse_family"]            # each axis's attributes: units, long_name, and
+                                               #   flag_values / flag_meanings of a coded axis
     sc = S["scenarios"]["constant_tf0.5"]      # scenarios in config order
     sc["attrs"]["anchorage"]                   # "free" | "constant" | "adaptive", ...
     sc["outcome"][i_amp, i_omega]              # numpy arrays over the axes, C order
@@ -84,6 +86,8 @@ def load(path):
         axes = f["axes"] if "axes" in f else groups[0][1]
         out = {"axes": names}
         out.update({n: axes[n][()] for n in names})
+        # Units and, for a categorical axis (pulse_family), flag_values / flag_meanings.
+        out["axis_attrs"] = {n: _attrs(axes[n]) for n in names}
         out["attrs"] = _attrs(f)
         out["provenance"] = _attrs(f["provenance"]) if "provenance" in f else {}
         scenarios = {}

@@ -168,7 +168,9 @@ void print_info(const Options& o, std::ostream& out) {
     for (const ParameterAxis& a : spec.axes) {
         const ParameterInfo& i = parameter_info(a.parameter);
         out << "  " << i.name << " (" << i.long_name << (std::string(i.units) == "1" ? "" : ", " + std::string(i.units)) << "): ";
-        for (std::size_t k = 0; k < a.values.size(); ++k) out << (k ? ", " : "") << a.values[k];
+        if (const std::string names = flag_meanings(a); !names.empty()) out << names;
+        else
+            for (std::size_t k = 0; k < a.values.size(); ++k) out << (k ? ", " : "") << a.values[k];
         out << "\n";
     }
     out << "  " << spec.scenarios.size() << " scenarios x " << spec.cells_per_scenario() << " = " << spec.cell_count() << " cells\n";

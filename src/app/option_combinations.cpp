@@ -158,7 +158,7 @@ void check_axes(const Given& given, const std::string& subcommand, const Options
     const std::pair<const char*, const char*> typed_lists[] = {
         {"theta_f_ratio", "--theta-f-ratios"}, {"theta_f_ratio", "--adaptive-theta-f-ratio"},
         {"stiffness_n_m", "--theta-f-ratios"}, {"stiffness_n_m", "--adaptive-theta-f-ratio"},
-        {"kmin_ratio", "--kmin-ratios"}, {"strength_ratio", "--strength-ratio"}};
+        {"kmin_ratio", "--kmin-ratios"}, {"strength_ratio", "--strength-ratio"}, {"pulse_family", "--pulse"}};
     for (std::string text : o.grid.axes) {
         std::string name = text.substr(0, text.find('='));
         std::replace(name.begin(), name.end(), '-', '_');

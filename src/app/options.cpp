@@ -206,6 +206,28 @@ void collapse_anchorage_scenarios(SweepSpec& spec) {
     spec.scenarios = std::move(kept);
 }
 
+/// A pulse-family axis: every family on it must take what the sweep sets of the pulse (a phase,
+/// a vertical pulse, from the options or another axis), and --cycles reaches the families that
+/// take it.
+void check_family_axis(const Options& o, SweepSpec& spec) {
+    const auto family_axis = std::find_if(spec.axes.begin(), spec.axes.end(),
+                                          [](const ParameterAxis& a) { return a.parameter == Parameter::pulse_family; });
+    if (family_axis == spec.axes.end()) return;
+    std::string shaped;  // what of the pulse only the phased families take
+    for (const ParameterAxis& a : spec.axes)
+        if (a.parameter == Parameter::phase || a.parameter == Parameter::vertical_g || a.parameter == Parameter::vertical_phase)
+            shaped = "--axis " + a.text;
+    if (shaped.empty() && (o.pulse.phase != 0.0 || o.pulse.vertical_g != 0.0 || o.pulse.vertical_phase != 0.0))
+        shaped = "--phase or --vertical-amplitude";
+    for (double code : family_axis->values) {
+        const auto f = static_cast<PulseFamily>(static_cast<int>(code));
+        if (!shaped.empty() && !takes_phase(f))
+            throw InputError("axis", family_axis->text, "families that take a phase and a vertical pulse (one-sine, n-sine) with " +
+                                                            shaped + " (" + to_string(f) + " does not)");
+        if (takes_cycles(f)) spec.pulse_cycles = o.pulse.cycles;
+    }
+}
+
 /// The --axis options into spec.axes, in the order given (the first varies slowest).
 void add_parameter_axes(const Options& o, SweepSpec& spec) {
     for (const std::string& text : o.grid.axes) {
@@ -219,6 +241,7 @@ void add_parameter_axes(const Options& o, SweepSpec& spec) {
             throw InputError("axis", text, name + " only with --pulse one-sine or n-sine (here " + to_string(spec.pulse_family) + ")");
         spec.axes.push_back(std::move(axis));
     }
+    check_family_axis(o, spec);
     collapse_anchorage_scenarios(spec);
 }
 

@@ -7,6 +7,7 @@
 
 #include "rocksweep/core/errors.hpp"
 #include "rocksweep/physics/block.hpp"
+#include "rocksweep/physics/pulse_library.hpp"
 
 namespace rocksweep {
 
@@ -27,6 +28,7 @@ constexpr ParameterInfo table[] = {
     {Parameter::theta_f_ratio, "theta_f_ratio", "1", "fracture angle theta_f / alpha of the (K_max) spring", 1e-3, 1e3, false},
     {Parameter::kmin_ratio, "kmin_ratio", "1", "K_min / K_max of the adaptive anchorage", 1e-6, 1.0, false},
     {Parameter::stiffness, "stiffness_n_m", "N/m", "spring stiffness K (K_max of the adaptive anchorage)", 0.0, 1e12, true},
+    {Parameter::pulse_family, "pulse_family", "1", "pulse family (code, named by flag_meanings)", 0.0, 0.0, false},
 };
 
 std::string range_text(const ParameterInfo& i) {
@@ -85,6 +87,20 @@ ParameterAxis parse_parameter_axis(const std::string& option, const std::string&
     const std::string allowed = std::string(info->name) + " values in " + range_text(*info);
 
     ParameterAxis axis{info->parameter, {}, text};
+    if (info->parameter == Parameter::pulse_family) {
+        const std::vector<std::string>& names = pulse_family_names();
+        for (const std::string& v : split(rest, ',')) {
+            const auto it = std::find(names.begin(), names.end(), v);
+            std::string all;
+            for (const std::string& n : names) all += (all.empty() ? "" : ", ") + n;
+            if (it == names.end()) throw InputError(option, text, "pulse_family=NAME,NAME,... with NAME one of " + all);
+            const double code = static_cast<double>(it - names.begin());
+            if (std::find(axis.values.begin(), axis.values.end(), code) != axis.values.end())
+                throw InputError(option, text, "each family once (" + v + " is listed twice)");
+            axis.values.push_back(code);
+        }
+        return axis;
+    }
     const std::vector<std::string> range = split(rest, ':');
     if (range.size() == 3) {
         double lo, hi, n;
@@ -111,6 +127,13 @@ ParameterAxis parse_parameter_axis(const std::string& option, const std::string&
         if (!ok) throw InputError(option, text, allowed);
     }
     return axis;
+}
+
+std::string flag_meanings(const ParameterAxis& axis) {
+    if (axis.parameter != Parameter::pulse_family) return "";
+    std::string s;
+    for (double code : axis.values) s += (s.empty() ? "" : " ") + pulse_family_names().at(static_cast<std::size_t>(code));
+    return s;
 }
 
 }  // namespace rocksweep

@@ -50,6 +50,7 @@ SweepSpec::Plane SweepSpec::plane(std::size_t plane_index) const {
             case Parameter::theta_f_ratio: p.anchorage.theta_f_ratio = x; break;
             case Parameter::kmin_ratio: p.anchorage.kmin_ratio = x; break;
             case Parameter::stiffness: p.anchorage.stiffness_n_m = x; break;
+            case Parameter::pulse_family: p.shape.family = static_cast<PulseFamily>(static_cast<int>(x)); break;
         }
     }
     p.reshaped = alpha != block.alpha_rad || radius != block.radius_m;

@@ -24,6 +24,10 @@ GridGroup::GridGroup(const h5::Group& group, std::span<const GridAxis> axes) : g
         h5::Dataset ds = h5::write_1d<double>(group, a.name, a.values);
         h5::write_attribute(ds, "units", a.units);
         h5::write_attribute(ds, "long_name", a.long_name);
+        if (!a.flag_meanings.empty()) {
+            h5::write_attribute(ds, "flag_values", std::span<const double>(a.values));
+            h5::write_attribute(ds, "flag_meanings", a.flag_meanings);
+        }
         h5::make_scale(ds, a.name);
         scales_.push_back(std::move(ds));
     }

@@ -25,7 +25,7 @@ inline std::vector<GridAxis> grid_axes(const SweepSpec& spec) {
     std::vector<GridAxis> axes;
     for (const ParameterAxis& a : spec.axes) {
         const ParameterInfo& i = parameter_info(a.parameter);
-        axes.push_back({i.name, i.units, i.long_name, a.values});
+        axes.push_back({i.name, i.units, i.long_name, a.values, flag_meanings(a)});
     }
     axes.push_back({"amplitude_ratio", "1", "a_p0 / (alpha g)", spec.amplitude_ratio.values()});
     axes.push_back({"omega_ratio", "1", "omega_p / p", spec.omega_ratio.values()});

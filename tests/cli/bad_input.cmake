@@ -262,3 +262,7 @@ bad_input(refine_axes_unknown "--refine-axes = phase_rad omega_ratio is invalid:
           sweep --config ${CFG} -o ${OUT} --refine 8 --refine-axes phase_rad omega_ratio)
 bad_input(refine_axes_without_refine "--refine-axes = amplitude_ratio omega_ratio is invalid: only with --refine STRIDE"
           sweep --config ${CFG} -o ${OUT} --refine-axes amplitude_ratio omega_ratio)
+bad_input(axis_family_without_phase "--axis = pulse_family=one-sine,ricker is invalid: families that take a phase and a vertical pulse \\(one-sine, n-sine\\) with --axis phase_rad=0,1 \\(ricker does not\\)"
+          sweep --config ${CFG} -o ${OUT} --axis pulse_family=one-sine,ricker --axis phase_rad=0,1)
+bad_input(axis_family_and_pulse "--pulse = ricker is invalid: not together with --axis pulse_family=one-sine,ricker"
+          sweep --config ${CFG} -o ${OUT} --pulse ricker --axis pulse_family=one-sine,ricker)

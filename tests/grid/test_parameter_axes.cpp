@@ -190,6 +190,29 @@ TEST(SweepPlanes, AStiffnessAxisSetsKAndTheFractureAngleFollowsFromFu) {
     EXPECT_EQ(a.theta_f_rad, c.theta_f_rad);
 }
 
+// The pulse family as a categorical axis: codes in the order given, named for the file, and each
+// plane the sweep of that family.
+TEST(SweepPlanes, APulseFamilyAxisIsTheSweepOfEachFamily) {
+    SweepSpec swept = small_spec();
+    swept.pulse_cycles = 2;
+    swept.axes.push_back(parse_parameter_axis("axis", "pulse_family=ricker,one-sine,cycloidal-c"));
+    EXPECT_EQ(swept.axes[0].values, (std::vector<double>{6.0, 0.0, 4.0}));
+    EXPECT_EQ(flag_meanings(swept.axes[0]), "ricker one-sine cycloidal-c");
+    const PulseFamily families[] = {PulseFamily::ricker, PulseFamily::one_sine, PulseFamily::cycloidal_c};
+    for (std::size_t plane = 0; plane < 3; ++plane) {
+        SweepSpec plain = small_spec();
+        plain.pulse_family = families[plane];
+        plain.pulse_cycles = 2;
+        for (std::size_t s = 0; s < 2; ++s) {
+            const std::vector<CellResult> a = run(swept, s * 36 + plane * 12, 12), b = run(plain, s * 12, 12);
+            for (std::size_t i = 0; i < 12; ++i)
+                EXPECT_TRUE(bitwise_equal(a[i], b[i])) << to_string(families[plane]) << ", scenario " << s << ", cell " << i;
+        }
+    }
+    EXPECT_NE(refusal("pulse_family=ricker,sine").find("NAME one of one-sine, n-sine"), std::string::npos);
+    EXPECT_NE(refusal("pulse_family=ricker,ricker").find("each family once"), std::string::npos);
+}
+
 TEST(SweepPlanes, ARestitutionAboveHousnersValueOfAReshapedBlockIsRefused) {
     SweepSpec swept = small_spec();
     swept.axes.push_back(parse_parameter_axis("axis", "alpha_rad=0.1,0.3"));

@@ -20,6 +20,7 @@ enum class Parameter {
     theta_f_ratio,   ///< theta_f / alpha of the constant spring and of the adaptive K_max spring
     kmin_ratio,      ///< K_min / K_max of the adaptive anchorage
     stiffness,       ///< K [N/m] of the constant spring, K_max of the adaptive (theta_f from F_u)
+    pulse_family,    ///< categorical: the values are PulseFamily codes, named by flag_meanings
 };
 
 /// What a parameter is called in options and files, its units and its range.
@@ -36,7 +37,8 @@ const ParameterInfo& parameter_info(Parameter p);
 std::string parameter_names();
 
 /// One parameter axis as the user wrote it: NAME=LO:HI:POINTS (evenly spaced, both ends
-/// included) or NAME=V1,V2,... (the values as listed, strictly increasing).
+/// included) or NAME=V1,V2,... (the values as listed, strictly increasing); the pulse family
+/// takes names, pulse_family=one-sine,ricker, and holds their codes in the order given.
 struct ParameterAxis {
     Parameter parameter;
     std::vector<double> values;
@@ -47,5 +49,9 @@ struct ParameterAxis {
 /// InputError(option, text, allowed) naming what is wrong: the name, the form, a value outside
 /// the parameter's range, a reversed or repeated value.
 ParameterAxis parse_parameter_axis(const std::string& option, const std::string& text);
+
+/// The names of a categorical axis's codes, space-separated in the order of its values (CF
+/// flag_meanings: "one-sine ricker"); "" for a numeric axis.
+std::string flag_meanings(const ParameterAxis& axis);
 
 }  // namespace rocksweep

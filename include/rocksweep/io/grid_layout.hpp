@@ -22,6 +22,7 @@ struct GridAxis {
     std::string units;      ///< CF units ("1" for a ratio)
     std::string long_name;  ///< the quantity in words
     std::vector<double> values;
+    std::string flag_meanings = "";  ///< a categorical axis: its codes' names (CF flag_values / flag_meanings)
 };
 
 /// The axes as written into one group: their scales, ready to be attached. Keeps references
