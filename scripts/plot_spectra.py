@@ -5,7 +5,8 @@
                     [--at AXIS=VALUE ...] [--across AXIS]
     plot_spectra.py IN.h5 -o OUT --diff A B [--at AXIS=VALUE ...]
 
-x = omega_p / p, y = a_p0 / (alpha g), with the pulse period T_p [s] on top and the peak ground
+x = omega_p / p (or T_p [s] for a sweep --period-range), y = a_p0 / (alpha g) (or a_p0 / g for
+--pga-range); on the ratio axes, the pulse period T_p [s] on top and the peak ground
 acceleration [g] on the right (from the file's p and alpha). Writes OUT.png and OUT.pdf (maps
 raster inside the PDF); with several fields, OUT_<field>.png/.pdf for each.
 
@@ -63,6 +64,11 @@ FIELDS = {
     "impacts": ("values", "impacts of the blocks that stay up (above the settling threshold)", "impacts"),
     "broken": ("categories", None, "broken springs"),
 }
+
+
+# The spectrum's two axes: the paper's ratios, or the pulse's own period and peak.
+AXIS_LABELS = {"omega_ratio": r"$\omega_p / p$", "period_s": r"pulse period $T_p$ [s]",
+               "amplitude_ratio": r"$a_{p0} / (\alpha g)$", "pga_g": r"PGA $a_{p0}$ [g]"}
 
 
 class Layers:
@@ -138,8 +144,8 @@ def diff_layers(sa, sb, name_a, name_b):
 
 def draw(ax, S, layers, norm=None, cmap=None):
     """Draws one panel; returns the continuous mappable (or None)."""
-    xe = rsplot.cell_edges(S["omega_ratio"])
-    ye = rsplot.cell_edges(S["amplitude_ratio"])
+    xe = rsplot.cell_edges(S[S["axes"][-1]])
+    ye = rsplot.cell_edges(S[S["axes"][-2]])
     ax.grid(False)  # the map is its own grid
     index = np.full(layers.cats[0][0].shape, -1)
     for k, (mask, _, _) in enumerate(layers.cats):
@@ -199,18 +205,21 @@ def figure(S, n_panels, blocks=None):
     legend_ax = fig.add_subplot(grid[nrows - 1, ncols - 1] if spare else grid[nrows, :])
     legend_ax.axis("off")
     p, alpha = S["attrs"].get("p_rad_s"), S["attrs"].get("alpha_rad")
-    xe, ye = rsplot.cell_edges(S["omega_ratio"]), rsplot.cell_edges(S["amplitude_ratio"])
+    x_name, y_name = S["axes"][-1], S["axes"][-2]
+    xe, ye = rsplot.cell_edges(S[x_name]), rsplot.cell_edges(S[y_name])
     axes[0].set_xlim(xe[0], xe[-1])  # shared: every panel's limits, before the secondary axes' ticks
     axes[0].set_ylim(ye[0], ye[-1])
     for k, ax in enumerate(axes):
         r, c = divmod(k, ncols)
         last_in_column = k + ncols >= n_panels
-        ax.set_xlabel(r"$\omega_p / p$" if last_in_column else "")
+        ax.set_xlabel(AXIS_LABELS[x_name] if last_in_column else "")
         ax.tick_params(labelbottom=last_in_column)
-        ax.set_ylabel(r"$a_{p0} / (\alpha g)$" if c == 0 else "")
+        ax.set_ylabel(AXIS_LABELS[y_name] if c == 0 else "")
         ax.tick_params(labelleft=c == 0)
         pk, ak = blocks[k] if blocks else (p, alpha)
-        rsplot.user_axes(ax, pk, ak, top=r == 0, right=c == ncols - 1 or k == n_panels - 1)
+        # The secondary axes turn ratios into the pulse's terms; a physical axis needs none.
+        rsplot.user_axes(ax, pk if x_name == "omega_ratio" else None, ak if y_name == "amplitude_ratio" else None,
+                         top=r == 0, right=c == ncols - 1 or k == n_panels - 1)
     return fig, axes, legend_ax
 
 

@@ -101,6 +101,14 @@ void add_model_options(CLI::App& app, Options& o) {
         ->expected(2)->check(number_in(1e-3, 1e3, none))->capture_default_str()->group(grd);
     app.add_option("--amplitude-ratio-points", g.amplitude_points, "Points on the a_p0 / (alpha g) axis")
         ->check(integer_in(1, 100000))->capture_default_str()->group(grd);
+    app.add_option("--period-range", g.period_range, "Instead of omega_p / p: pulse periods T_p = 2 pi / omega_p from LO to HI [s]")
+        ->expected(2)->check(number_in(1e-3, 1e3, "s"))->group(grd);
+    app.add_option("--period-points", g.period_points, "Points on the T_p axis (default: --omega-ratio-points)")
+        ->check(integer_in(1, 100000))->group(grd);
+    app.add_option("--pga-range", g.pga_range, "Instead of a_p0 / (alpha g): peak ground accelerations a_p0 / g from LO to HI")
+        ->expected(2)->check(number_in(1e-4, 100, "g"))->group(grd);
+    app.add_option("--pga-points", g.pga_points, "Points on the a_p0 / g axis (default: --amplitude-ratio-points)")
+        ->check(integer_in(1, 100000))->group(grd);
     app.add_option("--anchorages", g.anchorages, "Scenario kinds: free, constant, adaptive")
         ->check(one_of({"free", "constant", "adaptive"}))->capture_default_str()->group(grd);
     // 1/3 among the defaults: shown to the last digit, so that /provenance/config replays it.

@@ -24,9 +24,10 @@ void print_info(const Options& o, std::ostream& out) {
         << "  uplift threshold a_p0 / (alpha g) = " << std::tan(b.alpha_rad) / b.alpha_rad << "\n"
         << "  equations: " << to_string(spec.equations) << "\n";
     out << "grid\n"
-        << "  omega_p / p: " << spec.omega_ratio.lo << " .. " << spec.omega_ratio.hi << ", " << spec.omega_ratio.points << " points\n"
-        << "  a_p0 / (alpha g): " << spec.amplitude_ratio.lo << " .. " << spec.amplitude_ratio.hi << ", "
-        << spec.amplitude_ratio.points << " points\n";
+        << (spec.frequency_axis == FrequencyAxis::period_s ? "  T_p [s]: " : "  omega_p / p: ") << spec.omega_ratio.lo
+        << " .. " << spec.omega_ratio.hi << ", " << spec.omega_ratio.points << " points\n"
+        << (spec.amplitude_axis == AmplitudeAxis::pga_g ? "  a_p0 / g: " : "  a_p0 / (alpha g): ") << spec.amplitude_ratio.lo
+        << " .. " << spec.amplitude_ratio.hi << ", " << spec.amplitude_ratio.points << " points\n";
     for (const ParameterAxis& a : spec.axes) {
         const ParameterInfo& i = parameter_info(a.parameter);
         out << "  " << i.name << " (" << i.long_name << (std::string(i.units) == "1" ? "" : ", " + std::string(i.units)) << "): ";

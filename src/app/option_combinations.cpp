@@ -118,7 +118,8 @@ void check_simulate(const Given& given, const Options& o) {
     only_if(given, "--kmin-ratio", s.anchorage == "adaptive", "--anchorage adaptive (here " + a + ")");
     // Sweep-only options typed for a history would be ignored; from a shared config they are not.
     for (const char* opt : {"--omega-ratio-range", "--omega-ratio-points", "--amplitude-ratio-range", "--amplitude-ratio-points",
-                            "--anchorages", "--theta-f-ratios", "--kmin-ratios", "--adaptive-theta-f-ratio", "--scenario", "--axis"})
+                            "--anchorages", "--theta-f-ratios", "--kmin-ratios", "--adaptive-theta-f-ratio", "--scenario", "--axis",
+                            "--period-range", "--period-points", "--pga-range", "--pga-points"})
         if (given.source(opt) == Source::command_line)
             throw InputError(std::string(opt).substr(2), given.value(opt),
                              "an option of sweep and info only; simulate takes --omega-ratio, --amplitude-ratio, --anchorage, "
@@ -149,7 +150,16 @@ void check_sweep_kinds(const Given& given, const Options& o) {
 /// of them silently unused.
 void check_axes(const Given& given, const std::string& subcommand, const Options& o) {
     if (subcommand == "suite" || subcommand == "design" || subcommand == "basin")
-        only_if(given, "--axis", false, "sweep, info and merge (" + subcommand + " has axes of its own)");
+        for (const char* opt : {"--axis", "--period-range", "--period-points", "--pga-range", "--pga-points"})
+            only_if(given, opt, false, "sweep, info and merge (" + subcommand + " has axes of its own)");
+    // The spectrum's axes in physical terms replace the ratios: both typed is a contradiction.
+    const std::pair<const char*, const char*> units[] = {
+        {"--period-range", "--omega-ratio-range"}, {"--period-range", "--omega-ratio-points"},
+        {"--pga-range", "--amplitude-ratio-range"}, {"--pga-range", "--amplitude-ratio-points"}};
+    for (const auto& [physical, ratio] : units)
+        if (given(physical) && given.source(ratio) == Source::command_line)
+            throw InputError(std::string(ratio).substr(2), given.value(ratio),
+                             std::string("not together with ") + physical + " " + given.value(physical) + " (it replaces the ratio axis)");
     const std::pair<const char*, const char*> replaced[] = {
         {"phase_rad", "--phase"}, {"vertical_g", "--vertical-amplitude"}, {"vertical_phase_rad", "--vertical-phase"},
         {"restitution", "--restitution"}};

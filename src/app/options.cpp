@@ -175,6 +175,19 @@ SweepSpec make_sweep_spec(const Options& o) {
     spec.friction = o.base.friction;
     spec.omega_ratio = make_axis("omega-ratio", o.grid.omega_range, o.grid.omega_points);
     spec.amplitude_ratio = make_axis("amplitude-ratio", o.grid.amplitude_range, o.grid.amplitude_points);
+    // The spectrum in the pulse's own terms instead (a config's ratio axes give way).
+    if (o.grid.period_points != 0 && o.grid.period_range.empty())
+        throw InputError("period-points", std::to_string(o.grid.period_points), "only with --period-range LO HI");
+    if (o.grid.pga_points != 0 && o.grid.pga_range.empty())
+        throw InputError("pga-points", std::to_string(o.grid.pga_points), "only with --pga-range LO HI");
+    if (!o.grid.period_range.empty()) {
+        spec.omega_ratio = make_axis("period", o.grid.period_range, o.grid.period_points ? o.grid.period_points : o.grid.omega_points);
+        spec.frequency_axis = FrequencyAxis::period_s;
+    }
+    if (!o.grid.pga_range.empty()) {
+        spec.amplitude_ratio = make_axis("pga", o.grid.pga_range, o.grid.pga_points ? o.grid.pga_points : o.grid.amplitude_points);
+        spec.amplitude_axis = AmplitudeAxis::pga_g;
+    }
     const Block& b = spec.block;
     const double strength = o.anchorage.strength_ratio * b.mass_kg * b.gravity;
     const BreakRule rule = parse_break_rule(o.anchorage.break_rule);

@@ -58,9 +58,10 @@ std::optional<RefinePlanes> refine_planes(const SweepSpec& spec, const SweepComm
         names.push_back(parameter_info(a.parameter).name);
         sizes.push_back(a.values.size());
     }
-    names.insert(names.end(), {"amplitude_ratio", "omega_ratio"});
+    names.push_back(spec.amplitude_axis == AmplitudeAxis::pga_g ? "pga_g" : "amplitude_ratio");
+    names.push_back(spec.frequency_axis == FrequencyAxis::period_s ? "period_s" : "omega_ratio");
     sizes.insert(sizes.end(), {spec.amplitude_ratio.points, spec.omega_ratio.points});
-    std::vector<std::string> pair = cmd.refine_axes.empty() ? std::vector<std::string>{"amplitude_ratio", "omega_ratio"}
+    std::vector<std::string> pair = cmd.refine_axes.empty() ? std::vector<std::string>{names[names.size() - 2], names.back()}
                                                             : cmd.refine_axes;
     const std::string shown = pair.size() == 2 ? pair[0] + " " + pair[1] : "";
     if (cmd.refine_stride == 0) {

@@ -67,19 +67,17 @@ CellModel SweepSpec::cell(std::size_t index) const {
     const Scenario& sc = scenarios.at(index / per);
     const std::size_t in = index % per;
     const std::size_t on_plane = in % plane_cells();
-    const double w_ratio = omega_ratio.at(on_plane % omega_ratio.points);
-    const double a_ratio = amplitude_ratio.at(on_plane / omega_ratio.points);
-    if (axes.empty()) {
-        // a_p / g = (a_p / (alpha g)) alpha
-        const Pulse pulse = make_pulse(pulse_shape(), a_ratio * block.alpha_rad, w_ratio * block.p());
-        return make_cell_model(block, sc.anchorage, pulse, equations, impact_threshold);
-    }
-    // The ratios are the block's own: a_p / g = (a_p / (alpha g)) alpha and omega_p = (omega_p / p) p
-    // of the plane's block. The anchorage keeps the scenario's where the block and F_u are unchanged.
+    const double w_value = omega_ratio.at(on_plane % omega_ratio.points);
+    const double a_value = amplitude_ratio.at(on_plane / omega_ratio.points);
+    // The ratios are the block's own: a_p / g = (a_p / (alpha g)) alpha, omega_p = (omega_p / p) p;
+    // a period or a PGA is the pulse's whatever the block.
+    const auto a_g = [&](const Block& b) { return amplitude_axis == AmplitudeAxis::pga_g ? a_value : a_value * b.alpha_rad; };
+    const auto omega = [&](const Block& b) { return frequency_axis == FrequencyAxis::period_s ? 2.0 * M_PI / w_value : w_value * b.p(); };
+    if (axes.empty()) return make_cell_model(block, sc.anchorage, make_pulse(pulse_shape(), a_g(block), omega(block)), equations, impact_threshold);
+    // The anchorage keeps the scenario's where the block and F_u are unchanged.
     const Plane p = plane(in / plane_cells());
     const Anchorage a = p.reshaped || p.anchorage.any() ? anchorage_on(sc, block, p.block, p.anchorage) : sc.anchorage;
-    const Pulse pulse = make_pulse(p.shape, a_ratio * p.block.alpha_rad, w_ratio * p.block.p());
-    return make_cell_model(p.block, a, pulse, equations, impact_threshold);
+    return make_cell_model(p.block, a, make_pulse(p.shape, a_g(p.block), omega(p.block)), equations, impact_threshold);
 }
 
 void SweepResults::resize(std::size_t n) {

@@ -96,6 +96,7 @@ void write_root(const h5::File& f, const SweepSpec& spec, const IntegratorSettin
     }
     h5::write_attribute(f, "friction_coefficient", spec.friction);  // 0: not checked
     h5::write_attribute(f, "parameter_axes", parameter_axis_names(spec));
+    h5::write_attribute(f, "spectrum_axes", spectrum_axis_names(spec));
     const auto n_done = r ? static_cast<std::int64_t>(std::count_if(r->done.begin(), r->done.end(),
                                                                     [](std::uint8_t d) { return d != 0; }))
                           : std::int64_t{0};

@@ -63,6 +63,12 @@ void read_contents(const std::string& path, const h5::File& f, const SweepSpec& 
                    const IntegratorSettings& settings, SweepResults* r) {
     for (const NamedNumber& n : root_numbers(spec)) compare_number(path, f, n);
     io::compare_settings(path, f, result_settings(spec, settings));
+    const std::string spectrum = spectrum_axis_names(spec);
+    if (const std::string in_file = f.has_attribute("spectrum_axes") ? h5::read_string_attribute(f, "spectrum_axes")
+                                                                      : "amplitude_ratio, omega_ratio";
+        in_file != spectrum)
+        throw InputError("spectrum axes", spectrum,
+                         in_file + ", as " + path + " was computed with (a file continues only on the grid it was started on)");
     const std::string names = parameter_axis_names(spec);
     if (const std::string in_file = f.has_attribute("parameter_axes") ? h5::read_string_attribute(f, "parameter_axes") : "";
         in_file != names)

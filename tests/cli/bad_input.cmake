@@ -266,3 +266,9 @@ bad_input(axis_family_without_phase "--axis = pulse_family=one-sine,ricker is in
           sweep --config ${CFG} -o ${OUT} --axis pulse_family=one-sine,ricker --axis phase_rad=0,1)
 bad_input(axis_family_and_pulse "--pulse = ricker is invalid: not together with --axis pulse_family=one-sine,ricker"
           sweep --config ${CFG} -o ${OUT} --pulse ricker --axis pulse_family=one-sine,ricker)
+bad_input(period_and_omega_ratio "--omega-ratio-range = 1 5 is invalid: not together with --period-range 0.2 2 \\(it replaces the ratio axis\\)"
+          sweep --config ${CFG} -o ${OUT} --period-range 0.2 2 --omega-ratio-range 1 5)
+bad_input(pga_points_alone "--pga-points = 5 is invalid: only with --pga-range LO HI"
+          sweep --config ${CFG} -o ${OUT} --pga-points 5)
+bad_input(period_suite "--period-range = 0.2 2 is invalid: only with sweep, info and merge \\(suite has axes of its own\\)"
+          suite --config ${CFG} --suite ${PROJECT_SOURCE_DIR}/configs/records_suite.csv -o ${OUT} --period-range 0.2 2)

@@ -101,6 +101,25 @@ for col in ("outcome", "max_rotation", "impacts", "t_overturn", "peak_force_rati
 print("theta_f axis: one constant group, its theta_f = alpha plane bitwise the list's")
 PY
 
+# The spectrum in the pulse's own terms (T_p [s] x a_p0 [g]) over two sizes: the bigger block
+# survives more of the same pulses (Housner's size effect), which the ratio axes hide.
+phys=(--config "$cfg" --anchorages constant --theta-f-ratios 1 --quiet)
+"$rs" sweep "${phys[@]}" --period-range 0.25 2.5 --period-points 12 --pga-range 0.05 1.5 --pga-points 11 \
+  --axis radius_m=0.7,2.8 -o "$dir/physical.h5"
+"$py" - "$dir" <<'PY'
+import sys
+import h5py, numpy as np
+f = h5py.File(sys.argv[1] + "/physical.h5", "r")
+g = f["spectra/constant_tf1"]
+text = lambda v: v.decode() if isinstance(v, bytes) else v
+assert text(f.attrs["spectrum_axes"]) == "pga_g, period_s", f.attrs["spectrum_axes"]
+assert text(g["outcome"].attrs["dimensions"]) == "radius_m, pga_g, period_s"
+assert text(g["period_s"].attrs["units"]) == "s" and g["period_s"][0] == 0.25 and g["pga_g"][-1] == 1.5
+small, big = (np.count_nonzero(g["outcome"][k]) for k in (0, 1))
+assert big < small, (small, big)
+print("T_p x a_p0 axes: R = 0.7 m overturns in {} cells, R = 2.8 m in {}".format(small, big))
+PY
+
 # --resume with other axes: refused in one line, the file untouched.
 before=$(md5sum < "$dir/one.h5")
 set +e
@@ -112,3 +131,10 @@ echo "$msg" | grep -q "parameter axes phase_rad, restitution" || { echo "message
 [ "$(echo "$msg" | wc -l)" -eq 1 ] || { echo "not one line: $msg"; exit 1; }
 [ "$(md5sum < "$dir/one.h5")" = "$before" ] || { echo "the file changed"; exit 1; }
 echo "resume with other axes refused: $msg"
+set +e
+msg=$("$rs" sweep "${phys[@]}" --omega-ratio-points 12 --amplitude-ratio-points 11 --axis radius_m=0.7,2.8 --resume -o "$dir/physical.h5" 2>&1)
+rc=$?
+set -e
+[ "$rc" -eq 2 ] && echo "$msg" | grep -q "spectrum axes = amplitude_ratio, omega_ratio is invalid: pga_g, period_s, as" ||
+  { echo "resume on ratio axes of a T_p x a_p0 file: exit $rc: $msg"; exit 1; }
+echo "resume with the ratio axes refused: $msg"

@@ -213,6 +213,24 @@ TEST(SweepPlanes, APulseFamilyAxisIsTheSweepOfEachFamily) {
     EXPECT_NE(refusal("pulse_family=ricker,ricker").find("each family once"), std::string::npos);
 }
 
+// The spectrum's axes in the pulse's own terms: T_p [s] and a_p0 / g set the pulse whatever the
+// block, so blocks of another size see the same pulse (and no longer the same ratios).
+TEST(SweepPlanes, PeriodAndPgaAxesSetThePulseWhateverTheBlock) {
+    SweepSpec swept = small_spec();
+    swept.frequency_axis = FrequencyAxis::period_s;
+    swept.amplitude_axis = AmplitudeAxis::pga_g;
+    swept.omega_ratio = Axis{0.5, 1.5, 3};    // T_p [s]
+    swept.amplitude_ratio = Axis{0.1, 0.4, 4};  // a_p0 / g
+    swept.axes.push_back({Parameter::radius, {kSMatteo.radius_m, 4.0}, "radius_m=R,4"});
+    for (std::size_t plane : {std::size_t{0}, std::size_t{1}}) {
+        const CellModel c = swept.cell(plane * 12 + 2 * 3 + 1);  // a_p0 = 0.3 g, T_p = 1 s
+        EXPECT_EQ(c.pulse.ax_g, 0.30000000000000004);           // lo + (hi - lo) 2/3, as Axis::at gives it
+        EXPECT_EQ(c.pulse.omega, 2.0 * M_PI / 1.0);
+    }
+    EXPECT_EQ(swept.cell(0).pulse.ax_g, 0.1);
+    EXPECT_EQ(swept.cell(2).pulse.omega, 2.0 * M_PI / 1.5);
+}
+
 TEST(SweepPlanes, ARestitutionAboveHousnersValueOfAReshapedBlockIsRefused) {
     SweepSpec swept = small_spec();
     swept.axes.push_back(parse_parameter_axis("axis", "alpha_rad=0.1,0.3"));

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Inputs shared by the plotting tests (the `plot_inputs` fixture), small enough to take a
 # second or two: a 20 x 20 sweep of all seven S. Matteo scenarios and of the free one alone,
-# one over two parameter axes (phase, size),
+# one over two parameter axes (phase, size), one on T_p x a_p0 axes over two sizes,
 # the paper's sample case as HDF5 and CSV histories, Housner's constant-pulse pair, and a
 # 41 x 41 basin map of the seven scenarios.
 # usage: make_inputs.sh ROCKSWEEP CONFIG DIR
@@ -13,6 +13,8 @@ grid=(--omega-ratio-points 20 --amplitude-ratio-points 20 --quiet)
 "$rs" sweep --config "$cfg" "${grid[@]}" --scenario adaptive_rho0.5 -o "$dir/one.h5"
 "$rs" sweep --config "$cfg" "${grid[@]}" --anchorages free constant --theta-f-ratios 1 \
   --axis phase_rad=0,1.5707963267948966 --axis radius_m=0.7,2.8 -o "$dir/axes.h5"
+"$rs" sweep --config "$cfg" --quiet --anchorages constant --theta-f-ratios 1 --period-range 0.25 2.5 --period-points 20 \
+  --pga-range 0.05 1.5 --pga-points 20 --axis radius_m=0.7,2.8 -o "$dir/physical.h5"
 for a in free constant adaptive; do
   for ext in h5 csv; do
     "$rs" simulate --config "$cfg" --anchorage "$a" --kmin-ratio 0.5 --omega-ratio 4 --amplitude-ratio 2.7 \

@@ -44,6 +44,8 @@ struct GridOptions {
     double adaptive_theta_f_ratio = 1.0;  ///< K_max's spring: theta_f / alpha
     std::vector<std::string> only;        ///< --scenario: run only these
     std::vector<std::string> axes;        ///< --axis: parameter axes, as written (grid/parameter_axis.hpp)
+    std::vector<double> period_range, pga_range;  ///< the spectrum's axes in T_p [s] and a_p0 [g]; empty: ratios
+    std::size_t period_points = 0, pga_points = 0;  ///< 0: as many as the ratio axis
 };
 
 struct NumericsOptions {

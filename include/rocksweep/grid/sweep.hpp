@@ -33,6 +33,11 @@ struct Scenario {
     double kmin_ratio = 1;     ///< K_min / K_max; 1 unless adaptive
 };
 
+/// What the two axes a spectrum is drawn on hold: the paper's ratios (the default; a spectrum
+/// then holds for every block of the same shape), or the pulse's own period and peak.
+enum class FrequencyAxis { omega_ratio, period_s };    ///< omega_p / p, or T_p = 2 pi / omega_p [s]
+enum class AmplitudeAxis { amplitude_ratio, pga_g };   ///< a_p0 / (alpha g), or a_p0 / g
+
 /// Everything that defines the cells of a sweep.
 struct SweepSpec {
     Block block{};
@@ -44,8 +49,10 @@ struct SweepSpec {
     double vertical_g = 0.0;         ///< a_v0 / g (one-sine, n-sine)
     double vertical_phase = 0.0;     ///< psi_v [rad]
     double friction = 0.0;           ///< mu_s of the base, to flag cells that would slide; 0: unchecked
-    Axis omega_ratio;                ///< omega_p / p (a rectangle lasts pi / omega_p)
-    Axis amplitude_ratio;            ///< a_p / (alpha g), a_p the peak ground acceleration
+    Axis omega_ratio;                ///< omega_p / p (a rectangle lasts pi / omega_p); T_p [s] with period_s
+    Axis amplitude_ratio;            ///< a_p / (alpha g), a_p the peak ground acceleration; a_p / g with pga_g
+    FrequencyAxis frequency_axis = FrequencyAxis::omega_ratio;
+    AmplitudeAxis amplitude_axis = AmplitudeAxis::amplitude_ratio;
     std::vector<Scenario> scenarios;
     std::vector<ParameterAxis> axes;  ///< parameter axes, slowest first; each value a spectrum more
 
