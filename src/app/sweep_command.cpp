@@ -52,15 +52,7 @@ std::vector<IndexRange> missing_cells(const SpectraStream& stream, std::size_t t
 /// The planes --refine works on: over --refine-axes (two of the grid's axes, by name), by
 /// default the spectrum's own a_p0/(alpha g) x omega_p/p. None without --refine.
 std::optional<RefinePlanes> refine_planes(const SweepSpec& spec, const SweepCommand& cmd) {
-    std::vector<std::string> names;
-    std::vector<std::size_t> sizes;
-    for (const ParameterAxis& a : spec.axes) {
-        names.push_back(parameter_info(a.parameter).name);
-        sizes.push_back(a.values.size());
-    }
-    names.push_back(spec.amplitude_axis == AmplitudeAxis::pga_g ? "pga_g" : "amplitude_ratio");
-    names.push_back(spec.frequency_axis == FrequencyAxis::period_s ? "period_s" : "omega_ratio");
-    sizes.insert(sizes.end(), {spec.amplitude_ratio.points, spec.omega_ratio.points});
+    const std::vector<std::string> names = spec.axis_names();
     std::vector<std::string> pair = cmd.refine_axes.empty() ? std::vector<std::string>{names[names.size() - 2], names.back()}
                                                             : cmd.refine_axes;
     const std::string shown = pair.size() == 2 ? pair[0] + " " + pair[1] : "";
@@ -79,7 +71,7 @@ std::optional<RefinePlanes> refine_planes(const SweepSpec& spec, const SweepComm
         at[k] = static_cast<std::size_t>(it - names.begin());
     }
     if (at[0] == at[1]) throw InputError("refine-axes", shown, "two different axes");
-    return RefinePlanes(sizes, std::min(at[0], at[1]), std::max(at[0], at[1]));
+    return RefinePlanes(spec.axis_sizes(), std::min(at[0], at[1]), std::max(at[0], at[1]));
 }
 
 /// One sweep, in the order it runs: plan (constructor), agree on the output, run the passes,

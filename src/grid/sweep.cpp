@@ -29,6 +29,21 @@ std::size_t SweepSpec::planes_per_scenario() const {
     return n;
 }
 
+std::vector<std::string> SweepSpec::axis_names() const {
+    std::vector<std::string> names;
+    for (const ParameterAxis& a : axes) names.push_back(parameter_info(a.parameter).name);
+    names.push_back(amplitude_axis == AmplitudeAxis::pga_g ? "pga_g" : "amplitude_ratio");
+    names.push_back(frequency_axis == FrequencyAxis::period_s ? "period_s" : "omega_ratio");
+    return names;
+}
+
+std::vector<std::size_t> SweepSpec::axis_sizes() const {
+    std::vector<std::size_t> sizes;
+    for (const ParameterAxis& a : axes) sizes.push_back(a.values.size());
+    sizes.insert(sizes.end(), {amplitude_ratio.points, omega_ratio.points});
+    return sizes;
+}
+
 SweepSpec::Plane SweepSpec::plane(std::size_t plane_index) const {
     Plane p{block, pulse_shape(), {}, false, std::vector<std::size_t>(axes.size())};
     for (std::size_t k = axes.size(); k-- > 0;) {

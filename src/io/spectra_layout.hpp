@@ -22,27 +22,25 @@ constexpr std::int64_t format_version = 2;
 // The axes of every scenario's grid, slowest first: they alone shape the layout. The parameter
 // axes come first, so that each of their points holds one contiguous spectrum.
 inline std::vector<GridAxis> grid_axes(const SweepSpec& spec) {
+    const std::vector<std::string> names = spec.axis_names();  // C order, the spectrum's two last
     std::vector<GridAxis> axes;
-    for (const ParameterAxis& a : spec.axes) {
-        const ParameterInfo& i = parameter_info(a.parameter);
-        axes.push_back({i.name, i.units, i.long_name, a.values, flag_meanings(a)});
+    for (std::size_t k = 0; k < spec.axes.size(); ++k) {
+        const ParameterInfo& i = parameter_info(spec.axes[k].parameter);
+        axes.push_back({names[k], i.units, i.long_name, spec.axes[k].values, flag_meanings(spec.axes[k])});
     }
-    if (spec.amplitude_axis == AmplitudeAxis::pga_g)
-        axes.push_back({"pga_g", "1", "peak ground acceleration a_p0 / g", spec.amplitude_ratio.values()});
-    else
-        axes.push_back({"amplitude_ratio", "1", "a_p0 / (alpha g)", spec.amplitude_ratio.values()});
-    if (spec.frequency_axis == FrequencyAxis::period_s)
-        axes.push_back({"period_s", "s", "pulse period T_p = 2 pi / omega_p", spec.omega_ratio.values()});
-    else
-        axes.push_back({"omega_ratio", "1", "omega_p / p", spec.omega_ratio.values()});
+    const bool pga = spec.amplitude_axis == AmplitudeAxis::pga_g, period = spec.frequency_axis == FrequencyAxis::period_s;
+    axes.push_back({names[names.size() - 2], "1", pga ? "peak ground acceleration a_p0 / g" : "a_p0 / (alpha g)",
+                    spec.amplitude_ratio.values()});
+    axes.push_back({names.back(), period ? "s" : "1", period ? "pulse period T_p = 2 pi / omega_p" : "omega_p / p",
+                    spec.omega_ratio.values()});
     return axes;
 }
 
 // The root attribute `spectrum_axes`: the two axes a spectrum is drawn on, by name. A file
 // without it (written before physical units existed) has the ratios.
 inline std::string spectrum_axis_names(const SweepSpec& spec) {
-    const std::vector<GridAxis> axes = grid_axes(spec);
-    return axes[axes.size() - 2].name + ", " + axes.back().name;
+    const std::vector<std::string> names = spec.axis_names();
+    return names[names.size() - 2] + ", " + names.back();
 }
 
 // The root attribute `parameter_axes`: their names in order, "" for the plain 2-D spectra. A

@@ -66,6 +66,10 @@ struct SweepSpec {
     /// index = (scenario * n_planes + plane) * (n_amp n_omega) + i_amp * n_omega + i_omega, the
     /// plane counting the parameter axes in C order (the first varies slowest).
     CellModel cell(std::size_t index) const;
+    /// The grid's axes within a scenario, in C order, by the names files and options use
+    /// ("phase_rad", ..., "amplitude_ratio" or "pga_g", "omega_ratio" or "period_s"), and their sizes.
+    std::vector<std::string> axis_names() const;
+    std::vector<std::size_t> axis_sizes() const;
 
     /// What the parameter axes set in the cells of one plane (of every scenario).
     struct Plane {
