@@ -1,7 +1,8 @@
 #pragma once
 // The W-lane RK4 step of the kernel: one classical RK4 step per lane over a batch of cells, of
 // the equation of motion in system.hpp. Knows the ground only through the families' lane()
-// functions (excitation/*.hpp) and the anchorage only through its law's term (Law, an
+// functions (excitation/*.hpp), or for a nodal family (a record) through the values at the
+// step's nodes that its lane hands in, and the anchorage only through its law's term (Law, an
 // AnchorageLaw); where a step ends and what its end means is the event stepper's and the
 // cell's business (event_stepper.hpp, lane.hpp).
 #include <array>
@@ -29,10 +30,11 @@ struct RhsLane {
     bool linear;
     const Pulse* pulse = nullptr;  ///< its family and kind
     GroundLane ground;             ///< its family's lane coefficients
+    std::array<Ground, 3> nodes{}; ///< a nodal family's ground at t, t + h/2, t + h (set by the lane)
 };
 
-/// A batch whose lanes are not all of one vectorised family, or hold different records: each
-/// lane takes its own family's ground, outside the vector loop, with the same lane() as alone.
+/// A batch whose lanes are not all of one vectorised family: each lane takes its own family's
+/// ground, outside the vector loop, with the same lane() (or nodes) as alone.
 struct PerLane {};
 
 /// One classical RK4 step per lane; y = (theta, theta_dot). The lane loop is branch-free
@@ -48,25 +50,19 @@ struct Batch {
         alignas(64) double p2[W], alpha[W], side[W], linear[W];
         typename Law::template Soa<W> law;
         alignas(64) double ax_g[W], ay_g[W], omega[W], phase[W], phase_y[W], t_ref[W];
-        alignas(64) double sample_dt[W];
-        alignas(64) int last_segment[W];
         alignas(64) double in0[W], inm[W], in1[W];
-        const double* samples = nullptr;    ///< a record's tables, one for the batch
-        const double* samples_y = nullptr;
+        alignas(64) double ax_node[3][W], ay_node[3][W];  ///< a nodal family's ground
     } k{};
 
     /// Batch-uniform shortcuts, which give the same bits per lane as the full computation:
     /// no lane in the pulse (every ground value +0), no lane with a vertical component (ay +0),
-    /// no lane where the anchorage acts (its term<false>). Lanes of one record (any scales) share
-    /// its tables.
+    /// no lane where the anchorage acts (its term<false>). Lanes of any records share a batch.
     void step() {
         bool any_in = false, any_y = false, any_acts = false, mixed = false;
         int first_i = 0;  // the first lane that ever held a cell
         for (int i = W - 1; i >= 0; --i)
             if (c[i].pulse) first_i = i;
         const Pulse* first = c[first_i].pulse;
-        k.samples = c[first_i].ground.samples;
-        k.samples_y = c[first_i].ground.samples_y;
         for (int i = 0; i < W; ++i) {
             const rocking::Coef l = rocking::coef(c[i].p2, c[i].alpha, c[i].side, c[i].linear);
             k.p2[i] = l.p2; k.alpha[i] = l.alpha; k.side[i] = l.side; k.linear[i] = l.linear;
@@ -74,7 +70,10 @@ struct Batch {
             const GroundLane& g = c[i].ground;
             k.ax_g[i] = g.ax_g; k.ay_g[i] = g.ay_g; k.omega[i] = g.omega;
             k.phase[i] = g.phase; k.phase_y[i] = g.phase_y; k.t_ref[i] = g.t_ref;
-            k.sample_dt[i] = g.sample_dt_s; k.last_segment[i] = g.last_segment;
+            for (int j = 0; j < 3; ++j) {
+                k.ax_node[j][i] = c[i].nodes[j].ax;
+                k.ay_node[j][i] = c[i].nodes[j].ay;
+            }
             const double h = dt[i], t = t0[i];
             k.in0[i] = t < c[i].t_cut ? 1.0 : 0.0;
             k.inm[i] = t + 0.5 * h < c[i].t_cut ? 1.0 : 0.0;
@@ -82,14 +81,13 @@ struct Batch {
             any_in |= t < c[i].t_cut;  // dt >= 0: the later stage times are not earlier
             any_y |= g.ay_g != 0.0;
             any_acts |= Law::acts(c[i].law);
-            mixed |= c[i].pulse &&
-                     (c[i].pulse->kind != first->kind || g.samples != k.samples || g.samples_y != k.samples_y);
+            mixed |= c[i].pulse && c[i].pulse->kind != first->kind;
         }
-        if (mixed) return lanes<PerLane, true, true, true>(*this, nullptr, nullptr);
+        if (mixed) return lanes<PerLane, true, true, true>(*this);
         visit(*first, [&](const auto& e) {
             using F = std::decay_t<decltype(e)>;
             if constexpr (F::vectorised) family<F>(any_in, any_in && any_y, any_acts);
-            else lanes<PerLane, true, true, true>(*this, nullptr, nullptr);
+            else lanes<PerLane, true, true, true>(*this);
         });
     }
 
@@ -108,8 +106,8 @@ struct Batch {
     /// Same operations either way (AVX2 without FMA, -ffp-contract=off): same bits.
     template <class F, bool pulse, bool with_y, bool acts>
     void run() {
-        if (use_avx2()) lanes_avx2<F, pulse, with_y, acts>(*this, k.samples, k.samples_y);
-        else lanes<F, pulse, with_y, acts>(*this, k.samples, k.samples_y);
+        if (use_avx2()) lanes_avx2<F, pulse, with_y, acts>(*this);
+        else lanes<F, pulse, with_y, acts>(*this);
     }
 
     static bool use_avx2() {
@@ -121,39 +119,39 @@ struct Batch {
 #endif
     }
 
+    /// The ground of lane i at node j (0, 1, 2: t, t + h/2, t + h) at time t; `in` = 0 outside the
+    /// pulse's window.
     template <class F, bool with_y>
-    [[gnu::always_inline]] inline Ground ground(int i, const GroundLane& g, double t, double in) const {
+    [[gnu::always_inline]] inline Ground ground(int i, int j, const GroundLane& g, double t, double in) const {
         if constexpr (std::is_same_v<F, PerLane>) {
             if (!c[i].pulse) return Ground{};  // a lane that never held a cell
             return visit(*c[i].pulse, [&](const auto& e) {
-                return std::decay_t<decltype(e)>::template lane<true>(c[i].ground, t, in);
+                using G = std::decay_t<decltype(e)>;
+                if constexpr (G::nodal) return c[i].nodes[j];
+                else return G::template lane<true>(c[i].ground, t, in);
             });
+        } else if constexpr (F::nodal) {
+            return Ground{k.ax_node[j][i], k.ay_node[j][i]};
         } else {
             return F::template lane<with_y>(g, t, in);
         }
     }
 
-    // __restrict: the lanes' stores do not reach the tables a record's lanes gather from (passed
-    // apart: GCC does not carry restrict to a pointer loaded from the batch), so the loop
-    // vectorises with them (the same arithmetic, the same bits).
     template <class F, bool pulse, bool with_y, bool acts>
-    [[gnu::always_inline]] static inline void lanes_body(Batch& __restrict b, const double* __restrict samples,
-                                                         const double* __restrict samples_y) {
+    [[gnu::always_inline]] static inline void lanes_body(Batch& b) {
         for (int i = 0; i < W; ++i) {
             const rocking::Coef l{b.k.p2[i], b.k.alpha[i], b.k.side[i], b.k.linear[i]};
             const typename Law::Coef lk = b.k.law.load(i);
             GroundLane gl;
             gl.ax_g = b.k.ax_g[i]; gl.ay_g = b.k.ay_g[i]; gl.omega = b.k.omega[i];
             gl.phase = b.k.phase[i]; gl.phase_y = b.k.phase_y[i]; gl.t_ref = b.k.t_ref[i];
-            gl.sample_dt_s = b.k.sample_dt[i]; gl.last_segment = b.k.last_segment[i];
-            gl.samples = samples; gl.samples_y = samples_y;
             const double h = b.dt[i], t = b.t0[i], y = b.y0[i], v = b.v0[i];
             // The ground at t, t + h/2 (shared by k2 and k3) and t + h.
             Ground g0, gm, g1;
             if constexpr (pulse) {
-                g0 = b.template ground<F, with_y>(i, gl, t, b.k.in0[i]);
-                gm = b.template ground<F, with_y>(i, gl, t + 0.5 * h, b.k.inm[i]);
-                g1 = b.template ground<F, with_y>(i, gl, t + h, b.k.in1[i]);
+                g0 = b.template ground<F, with_y>(i, 0, gl, t, b.k.in0[i]);
+                gm = b.template ground<F, with_y>(i, 1, gl, t + 0.5 * h, b.k.inm[i]);
+                g1 = b.template ground<F, with_y>(i, 2, gl, t + h, b.k.in1[i]);
             }
             // k1 = f(t, y)
             const double k1y = v, k1v = rocking::theta_ddot<Law, acts>(l, lk, g0, y, k1y);
@@ -169,20 +167,19 @@ struct Batch {
         }
     }
     template <class F, bool pulse, bool with_y, bool acts>
-    static void lanes(Batch& __restrict b, const double* __restrict xs, const double* __restrict ys) {
-        lanes_body<F, pulse, with_y, acts>(b, xs, ys);
+    static void lanes(Batch& b) {
+        lanes_body<F, pulse, with_y, acts>(b);
     }
     // The same loop compiled for AVX2 (no FMA: the bits stay those of the baseline build).
 #if defined(__x86_64__) || defined(__i386__)
     template <class F, bool pulse, bool with_y, bool acts>
-    __attribute__((target("avx2"))) static void lanes_avx2(Batch& __restrict b, const double* __restrict xs,
-                                                           const double* __restrict ys) {
-        lanes_body<F, pulse, with_y, acts>(b, xs, ys);
+    __attribute__((target("avx2"))) static void lanes_avx2(Batch& b) {
+        lanes_body<F, pulse, with_y, acts>(b);
     }
 #else
     template <class F, bool pulse, bool with_y, bool acts>
-    static void lanes_avx2(Batch& __restrict b, const double* __restrict xs, const double* __restrict ys) {
-        lanes_body<F, pulse, with_y, acts>(b, xs, ys);
+    static void lanes_avx2(Batch& b) {
+        lanes_body<F, pulse, with_y, acts>(b);
     }
 #endif
 };

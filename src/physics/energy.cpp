@@ -117,23 +117,28 @@ Swing outward_swing(const CellModel& m, double ke, double kappa_out, double kapp
 
 Works step_works(const CellModel& m, double k_n_m, const StepEnds& step, double t) {
     Works w;
-    const double h = t - step.t0;
-    if (!(h > 0.0)) return w;
-    // Gauss-Legendre nodes on [-1, 1]: 0, +-sqrt(3/5), weights 8/9, 5/9.
+    // Gauss-Legendre nodes on [-1, 1]: 0, +-sqrt(3/5), weights 8/9, 5/9, on each piece of the
+    // step where the ground is smooth: a step may cross a record's samples.
     constexpr double x[3] = {-0.7745966692414834, 0.0, 0.7745966692414834};
     constexpr double wt[3] = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};
     const double b = m.half_width_m, t_end = m.pulse.end_time();
-    for (int i = 0; i < 3; ++i) {
-        const double tn = step.t0 + 0.5 * h * (1.0 + x[i]);
-        double th, thd;
-        step.at(tn, th, thd);
-        const double phi = std::abs(th), sgn = th > 0.0 ? 1.0 : (th < 0.0 ? -1.0 : 0.0);
-        const double ax = tn < t_end ? m.pulse.ax(tn) : 0.0;
-        w.excitation_j += wt[i] * (-m.mass_kg * ax * m.gravity * m.radius_m * std::cos(m.alpha - phi) * thd);
-        w.anchorage_j += wt[i] * (-rocking::SpringLaw::moment_nm(b, k_n_m, phi) * sgn * thd);
+    for (double a = step.t0; a < t;) {
+        const double e = std::min(t, a < t_end ? std::min(m.pulse.next_kink(a), t_end) : INFINITY);
+        const double h = e - a;
+        Works piece;
+        for (int i = 0; i < 3; ++i) {
+            const double tn = a + 0.5 * h * (1.0 + x[i]);
+            double th, thd;
+            step.at(tn, th, thd);
+            const double phi = std::abs(th), sgn = th > 0.0 ? 1.0 : (th < 0.0 ? -1.0 : 0.0);
+            const double ax = tn < t_end ? m.pulse.ax(tn) : 0.0;
+            piece.excitation_j += wt[i] * (-m.mass_kg * ax * m.gravity * m.radius_m * std::cos(m.alpha - phi) * thd);
+            piece.anchorage_j += wt[i] * (-rocking::SpringLaw::moment_nm(b, k_n_m, phi) * sgn * thd);
+        }
+        w.excitation_j += piece.excitation_j * 0.5 * h;
+        w.anchorage_j += piece.anchorage_j * 0.5 * h;
+        a = e;
     }
-    w.excitation_j *= 0.5 * h;
-    w.anchorage_j *= 0.5 * h;
     return w;
 }
 

@@ -31,6 +31,9 @@ public:
         if (obs) history_.emplace(m, *obs);
         t_pulse_end_ = m.pulse.end_time();
         ground_ = visit(m.pulse, [](const auto& e) { return e.lane_coefficients(); });
+        nodal_ = visit(m.pulse, [](const auto& e) { return std::decay_t<decltype(e)>::nodal; });
+        uplift_slope_ = m.uplift_slope();
+        never_uplifts_ = m.never_uplifts();  // a record's peak is a scan of the whole table
         h_ = set_.method == Method::paper ? set_.paper_dt_s
                                           : 2.0 * M_PI / (std::max(m.omega_max(), Law::omega(m)) * set_.steps_per_period);
         r_.t_overturn_s = NAN;
@@ -82,6 +85,7 @@ public:
             clipped_ = boundary_ - t_ <= h_;
             b.dt[i] = clipped_ ? boundary_ - t_ : h_;
         }
+        if (nodal_) c.nodes = nodes(b.dt[i], c.t_cut);
         return true;
     }
 
@@ -90,7 +94,7 @@ public:
         ++r_.steps;
         if (set_.method == Method::paper) return paper_step(b.dt[i], b.y1[i], b.v1[i], b.a0[i]);
         const double a0 = b.a0[i];
-        stepper_.finish(RockingEvents<Law>{law_, side_, th_, thd_, in_pulse()}, t_, th_, thd_, b.dt[i], b.y1[i], b.v1[i],
+        stepper_.finish(RockingEvents<Law>{law_, side_, th_, thd_, in_pulse(), m_, t_}, t_, th_, thd_, b.dt[i], b.y1[i], b.v1[i],
                         [&](double dt, double y1, double v1, Event e, bool interior) { accept(dt, y1, v1, a0, e, interior); });
     }
 
@@ -103,6 +107,9 @@ private:
     bool done_ = false;
     double t_pulse_end_, h_;
     GroundLane ground_;  ///< the pulse's coefficients in the lane loop
+    bool nodal_ = false;  ///< the pulse's family takes its ground at the nodes from the lane
+    double uplift_slope_;  ///< CellModel::uplift_slope, asked at every sample scanned at rest
+    bool never_uplifts_;
     double boundary_ = INFINITY;
     bool clipped_ = false;  ///< the prepared step ends on boundary_ (or the paper's t_end)
     std::int64_t scans_ = 0;  ///< ground samples scanned outside RK4 steps (rest, uplift)
@@ -121,11 +128,28 @@ private:
         if (in_pulse()) {
             b = std::min(b, t_pulse_end_);
             if (law_.switches_at_ground_zeros()) b = std::min(b, next_ax_zero());
-            // Where the ground stops being smooth (a record's samples) steps end, so the error
-            // stays that of a smooth right-hand side.
-            b = std::min(b, m_.pulse.next_kink(t_));
+            // A record's samples need not end steps (its moment nodes keep the order), but a
+            // tight reference may end them there, where every step sees a smooth ground.
+            if (set_.steps_end_at_samples) b = std::min(b, m_.pulse.next_kink(t_));
         }
         return b;
+    }
+
+    /// A nodal family's ground at the nodes of the step [t_, t_ + h]: the moment nodes for the
+    /// events method, whose steps lie inside the pulse or after it; for the paper's, the values
+    /// at the stage times, cut at t_cut as the other families' are.
+    std::array<Ground, 3> nodes(double h, double t_cut) const {
+        return visit(m_.pulse, [&](const auto& e) -> std::array<Ground, 3> {
+            using F = std::decay_t<decltype(e)>;
+            if constexpr (F::nodal) {
+                if (set_.method == Method::events && h > 0.0)
+                    return t_ < t_cut ? e.moment_nodes(t_, h) : std::array<Ground, 3>{};
+                auto at = [&](double t) { return F::template lane<true>(ground_, t, t < t_cut ? 1.0 : 0.0); };
+                return {at(t_), at(t_ + 0.5 * h), at(t_ + h)};
+            } else {
+                return {};
+            }
+        });
     }
 
     void finish(Outcome o) {
@@ -208,9 +232,13 @@ private:
 
     /// First time in [t, t_stop) at which the block uplifts, or +inf.
     double next_uplift(double t, double t_stop) {
-        if (m_.uplifts(t)) return t;
-        if (m_.never_uplifts()) return INFINITY;  // decided without integrating
-        return m_.pulse.first_uplift(t, t_stop, [this](double x) { return m_.uplifts(x); }, [this] { return charge(); });
+        if (m_.uplifts(t, uplift_slope_)) return t;
+        if (never_uplifts_) return INFINITY;  // decided without integrating
+        // The family visited once, not at every sample scanned: CellModel::uplifts' values.
+        return visit(m_.pulse, [&](const auto& e) {
+            return m_.pulse.first_uplift(t, t_stop, [&](double x) { return lifts(e.ax(x), e.ay(x), uplift_slope_); },
+                                         [this] { return charge(); });
+        });
     }
 
     /// Takes the state at t + dt as the new state and applies what happened there (the event

@@ -12,20 +12,14 @@ std::string to_string(Equations e) { return e == Equations::nonlinear ? "nonline
 
 double CellModel::p() const { return std::sqrt(p2); }
 
-namespace {
 /// Under the linearised equations theta'' at rest is p^2 (alpha (1 + ay) - |ax|): the
 /// threshold that keeps uplift consistent with the motion is alpha, not tan(alpha).
-double uplift_slope(const CellModel& m) {
-    return m.equations == Equations::linearised ? m.alpha : std::tan(m.alpha);
-}
-}  // namespace
+double CellModel::uplift_slope() const { return equations == Equations::linearised ? alpha : std::tan(alpha); }
 
-bool CellModel::uplifts(double t) const {
-    return std::abs(pulse.ax(t)) > (1.0 + pulse.ay(t)) * uplift_slope(*this);
-}
+bool CellModel::uplifts(double t, double slope) const { return lifts(pulse.ax(t), pulse.ay(t), slope); }
 
 bool CellModel::never_uplifts() const {
-    return pulse.peak_ax() <= (1.0 - pulse.peak_ay()) * uplift_slope(*this);
+    return pulse.peak_ax() <= (1.0 - pulse.peak_ay()) * uplift_slope();
 }
 
 double CellModel::omega_max() const {

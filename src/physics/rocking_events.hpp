@@ -7,6 +7,8 @@
 #include <cmath>
 
 #include "rocksweep/physics/anchorage_law.hpp"
+#include "rocksweep/physics/model.hpp"
+#include "rocksweep/physics/system.hpp"
 #include "event_stepper.hpp"
 
 namespace rocksweep::kernel {
@@ -17,6 +19,8 @@ struct RockingEvents {
     int side;                   ///< the side the step runs on, +-1
     double theta0, theta_dot0;  ///< the step's start
     bool acting;                ///< the ground moves at the step's start
+    const CellModel& m;
+    double t0;                  ///< the step's start time [s]
 
     double g(Event e, double d, double y, double v) const {
         const double s = side;
@@ -31,6 +35,38 @@ struct RockingEvents {
             case Event::none: break;
         }
         return 1.0;
+    }
+
+    /// The theta at which e happens, or NaN for an event that is not a level of theta (turn).
+    double level(Event e) const {
+        const double s = side;
+        switch (e) {
+            case Event::overturn: return s * M_PI / 2;
+            case Event::fracture: return s * law.break_angle();
+            case Event::impact: return 0.0;
+            case Event::turn:
+            case Event::none: break;
+        }
+        return NAN;
+    }
+
+    /// theta'' at time d into the step, in the state (y, v).
+    double acceleration(double d, double y, double v) const {
+        const double t = t0 + d;
+        const Ground g = acting ? Ground{m.pulse.ax(t), m.pulse.ay(t)} : Ground{};
+        return rocking::theta_ddot<Law>(rocking::coef(m.p2, m.alpha, side, m.equations == Equations::linearised),
+                                        law.coef(side), g, y, v);
+    }
+
+    /// No armed event other than e has happened in the state (y, v) at d.
+    bool only(Event e, double d, double y, double v) const {
+        bool clear = true;
+        auto check = [&](Event o) { clear &= o == e || g(o, d, y, v) > 0.0; };
+        check(Event::overturn);
+        if (law.intact(side)) check(Event::fracture);
+        check(Event::impact);
+        if (law.turn_armed(side, theta_dot0, acting)) check(Event::turn);
+        return clear;
     }
 
     Event earliest(double d, double y, double v, double& g_min) const {

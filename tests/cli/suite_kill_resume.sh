@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
 # suite_kill_resume.sh ROCKSWEEP CONFIG SUITE WORKDIR NP
 # SIGKILL a suite sweep at several moments; each time the file (if any) must open, and
-# --resume must end with exactly the datasets of an uninterrupted run. The run must outlast the
-# first kills: 32 levels (16 until records ran in the vector loop, 1.6x faster, when the 2-rank
-# run sometimes finished before the kill at 0.3 s had left a partial file).
+# --resume must end with exactly the datasets of an uninterrupted run. The kills come at fixed
+# delays after the output file first appears (its first checkpoint), not after the start, so
+# that a faster engine or a slower MPI start does not move them past the run's end: 64 levels,
+# about 3 s on one rank.
 set -eu
 rs="$1"; cfg="$2"; suite="$3"; dir="$4"; np="$5"
 mkdir -p "$dir"
 args=(suite --config "$cfg" --suite "$suite" --anchorages free constant adaptive --theta-f-ratios 1 --kmin-ratios 0.1
-      --intensity-points 32 --radius-range 0.6 3 --radius-points 4 --steps-per-period 96 --quiet --checkpoint-interval 0.2)
+      --intensity-points 64 --radius-range 0.6 3 --radius-points 4 --steps-per-period 96 --quiet --checkpoint-interval 0.2)
 run=("$rs")
 if [ "$np" -gt 1 ]; then
   run=(mpirun --oversubscribe -np "$np")
@@ -19,11 +20,16 @@ ref="$dir/ref.h5"
 rm -f "$ref"
 "$rs" "${args[@]}" -o "$ref"
 partial=0
-for delay in 0.3 1.0 2.0; do
+for delay in 0 0.3 0.8; do
   out="$dir/killed-$delay.h5"
   rm -f "$out" "$out.tmp"
   "${run[@]}" "${args[@]}" -o "$out" &
   pid=$!
+  for ((i = 0; i < 600; i++)); do
+    [ -f "$out" ] && break
+    kill -0 "$pid" 2>/dev/null || break
+    sleep 0.05
+  done
   sleep "$delay"
   pkill -KILL -P "$pid" 2>/dev/null || true
   kill -KILL "$pid" 2>/dev/null || true

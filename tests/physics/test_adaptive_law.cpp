@@ -48,6 +48,8 @@ Ledger energy_ledger(const CellModel& m, double t_end_s) {
     IntegratorSettings s;
     s.t_end_s = t_end_s;
     s.energy_stop = false;
+    s.steps_end_at_samples = true;  // as a history's (sample_history): W's quadrature then sees
+                                    // the Hermite states of short steps, ~1e-7 of the work
     Ledger l;
     bool first = true;
     StepRecord prev{};

@@ -64,15 +64,15 @@ struct Oscillator {
     }
 };
 
-/// Events of the oscillator: `impact` at y = 0; `fracture` at y = level on the way up; turning
+/// Events of the oscillator: `impact` at y = 0; `fracture` at y = fracture_at on the way up; turning
 /// points (v = 0) are `turn`. grazes() flags every step that turns.
 struct ToyEvents {
-    double level = 2.0;  ///< above the motion: no fracture
+    double fracture_at = 2.0;  ///< above the motion: no fracture
     double y0 = 1.0, v0 = 0.0;
     double g(kernel::Event e, double, double y, double v) const {
         switch (e) {
             case kernel::Event::impact: return y;
-            case kernel::Event::fracture: return level - y;
+            case kernel::Event::fracture: return fracture_at - y;
             case kernel::Event::turn: return v;
             default: return 1.0;
         }
@@ -87,6 +87,15 @@ struct ToyEvents {
         return which;
     }
     bool grazes(double, double, double v1) const { return v0 > 0.0 && v1 < 0.0; }
+    double level(kernel::Event e) const {
+        return e == kernel::Event::impact ? 0.0 : e == kernel::Event::fracture ? fracture_at : NAN;
+    }
+    double acceleration(double, double y, double) const { return -y; }
+    bool only(kernel::Event e, double d, double y, double v) const {
+        for (kernel::Event o : {kernel::Event::impact, kernel::Event::fracture})
+            if (o != e && g(o, d, y, v) <= 0.0) return false;
+        return true;
+    }
 };
 
 struct Accepted {
@@ -136,16 +145,32 @@ TEST(EventStepper, LocatesTheEarliestRootOfTheFunctionsItIsHanded) {
 }
 
 // A step of the size the kernel takes (0.05 of a period of 2 pi): the first re-run goes to the
-// root of the cubic Hermite interpolant, and a few more bracket it to 1e-12 of the step.
-TEST(EventStepper, AShortStepFindsItsRootInAFewReRuns) {
+// root of the cubic Hermite interpolant, and the second-order Taylor step from there lands on
+// the level: the root to rounding, in one re-run.
+TEST(EventStepper, AnEventAtALevelIsProjectedOntoItInOneReRun) {
     const double t0 = M_PI / 2 - 0.2;
     ToyEvents ev;
     Oscillator::step(t0, ev.y0, ev.v0);
     const Accepted a = run_step(ev, t0, 0.3, [](double t, double& y, double& v) { Oscillator::step(t, y, v); });
     EXPECT_EQ(a.event, kernel::Event::impact);
-    EXPECT_NEAR(t0 + a.dt, M_PI / 2, 4e-12 * 0.3);
+    EXPECT_NEAR(t0 + a.dt, M_PI / 2, 1e-14);
+    EXPECT_EQ(a.y, 0.0);
+    EXPECT_NEAR(a.v, -1.0, 1e-12);  // O(delta^2): theta''' delta^2 / 2, delta ~ 1e-6
+    EXPECT_EQ(a.trials, 2) << "1 whole step + 1 re-run";
+}
+
+// Where the interpolant is poor (a step of 0.4 of a period), the projection would be large: the
+// re-runs bracket the root to 1e-12 of the step instead.
+TEST(EventStepper, ALongStepFindsItsRootInAFewReRuns) {
+    const double t0 = M_PI / 2 - 1.2;
+    ToyEvents ev;
+    Oscillator::step(t0, ev.y0, ev.v0);
+    const Accepted a = run_step(ev, t0, 2.5, [](double t, double& y, double& v) { Oscillator::step(t, y, v); });
+    EXPECT_EQ(a.event, kernel::Event::impact);
+    EXPECT_NEAR(t0 + a.dt, M_PI / 2, 4e-12 * 2.5);
     EXPECT_LE(a.y, 0.0);
-    EXPECT_LE(a.trials, 6) << "1 whole step + the re-runs";
+    EXPECT_GT(a.trials, 2) << "not projected";
+    EXPECT_LE(a.trials, 8) << "1 whole step + the re-runs";
 }
 
 // theta computed as y0 + (a small increment) rounds to exactly 0 near an impact: a trial on
@@ -171,7 +196,7 @@ TEST(EventStepper, ATrialOnWhichTheFunctionIsZeroEndsTheSearch) {
 // in (0, peak].
 TEST(EventStepper, AGrazingPeakIsCheckedAtItsTurningPoint) {
     ToyEvents ev;
-    ev.level = 0.99;
+    ev.fracture_at = 0.99;
     ev.y0 = 0.0;
     ev.v0 = 1.0;  // y = sin t: peak 1 at pi/2, y(3) = 0.14
     const Accepted a = run_step(ev, 0.0, 3.0, [](double t, double& y, double& v) {
@@ -181,7 +206,7 @@ TEST(EventStepper, AGrazingPeakIsCheckedAtItsTurningPoint) {
     EXPECT_EQ(a.event, kernel::Event::fracture);
     EXPECT_NEAR(a.dt, std::asin(0.99), 1e-10);
     // Below the peak the spring holds: the step ends at the turning point, inside the step.
-    ev.level = 1.001;
+    ev.fracture_at = 1.001;
     const Accepted b = run_step(ev, 0.0, 3.0, [](double t, double& y, double& v) {
         y = std::sin(t);
         v = std::cos(t);

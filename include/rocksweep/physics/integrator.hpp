@@ -26,6 +26,10 @@ struct IntegratorSettings {
     std::int64_t max_steps = 2'000'000;  ///< a cell that needs more is reported not converged
     bool energy_stop = true;  ///< after the pulse, decide a safe block by energy
     double t_end_s = INFINITY;  ///< stop here even if undecided (histories); INFINITY: until decided
+    /// A record's samples end steps (events method), as in the tight references: each step then
+    /// sees a linear ground. Off, steps cross samples and keep their order through the record's
+    /// moment nodes (docs/physics_kernel.md).
+    bool steps_end_at_samples = false;
     /// Polled every few hundred batch steps (well under a millisecond of work); when it returns
     /// true the integration throws Interrupted. Does not shape results.
     std::function<bool()> stop_requested;

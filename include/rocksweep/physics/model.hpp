@@ -38,13 +38,20 @@ struct CellModel {
 
     double p() const;
     /// Uplift from rest (Eq. 1): |ax| > (1 + ay) tan(alpha).
-    bool uplifts(double t) const;
+    bool uplifts(double t) const { return uplifts(t, uplift_slope()); }
+    /// The same with tan(alpha) (alpha, linearised: uplift_slope()) computed once by the caller,
+    /// who scans many times.
+    bool uplifts(double t, double slope) const;
+    double uplift_slope() const;
     /// True if no time of the pulse can satisfy Eq. 1: |ax| <= (1 - |ay|) threshold throughout.
     bool never_uplifts() const;
     /// Fastest time scale of the cell's ground and rocking [rad/s] (the kernel takes the larger
     /// of this and its anchorage law's).
     double omega_max() const;
 };
+
+/// Eq. 1 under the ground (ax, ay) [g], with CellModel::uplift_slope.
+inline bool lifts(double ax, double ay, double slope) { return std::abs(ax) > (1.0 + ay) * slope; }
 
 /// Right-hand side theta'' [rad/s^2] for a cell on side s (+1: theta > 0) with Eq. 8's spring of
 /// coefficient kappa, ground accelerations ax, ay [g]: the kernel's equation (system.hpp) under

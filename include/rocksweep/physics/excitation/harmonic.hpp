@@ -13,6 +13,7 @@ namespace rocksweep {
 struct Harmonic {
     double ax_g, omega, phase, ay_g, phase_y, periods;
     static constexpr bool vectorised = true;  ///< its lane() runs in the vector loop
+    static constexpr bool nodal = false;      ///< the kernel evaluates lane() at the nodes
 
     double end_time() const { return periods * (2.0 * M_PI / omega); }
     double ax(double t) const { return ax_g * std::sin(omega * t + phase); }

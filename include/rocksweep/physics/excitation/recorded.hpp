@@ -1,10 +1,13 @@
 #pragma once
 /// A recorded ground motion: horizontal and (optionally) vertical samples / g at a fixed interval
 /// from t = 0, linear between samples, times a scale factor applied after interpolation. Its
-/// sample times are where it stops being smooth: each ends a step. The samples are shared (one
-/// table per record, whatever the scale), so the lanes of a batch that hold one record at
-/// different scales read one table in the vector loop (docs/physics.md, "Recorded ground motions").
+/// sample times are where it stops being smooth. A step may cross them: the kernel takes the
+/// ground at a step's nodes as moment_nodes, with which RK4 integrates the kinked ground exactly
+/// where it enters linearly, so the step keeps its fourth order (docs/physics_kernel.md,
+/// "Steps across a record's samples"). The samples are shared (one table per record, whatever
+/// the scale).
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -17,7 +20,8 @@ struct Recorded {
     const std::vector<double>* samples_y;  ///< vertical / g, same times and length; nullptr: none
     double dt_s;
     double scale = 1.0;                     ///< applied to both components after interpolation
-    static constexpr bool vectorised = true;  ///< its lane() runs in the vector loop (one shared table)
+    static constexpr bool vectorised = true;  ///< the lane loop vectorises over its nodes
+    static constexpr bool nodal = true;       ///< the lane hands the kernel its ground at the nodes
 
     double end_time() const { return static_cast<double>(samples->size() - 1) * dt_s; }
     /// The scalar questions take the lane's own arithmetic: the same bits as the kernel.
@@ -87,7 +91,53 @@ struct Recorded {
         return g;
     }
 
+    /// The ground at RK4's nodes t0, t0 + h/2, t0 + h (h > 0, the step inside the record) as the
+    /// three values for which Simpson's rule, the quadrature inside RK4, gives the exact integrals
+    /// of u, u s and u s^2 over the step (s = (t - t0) / h) of the piecewise-linear record. The
+    /// ground enters the equation of motion linearly, so every term of the step's local error
+    /// linear in it is then that of a smooth ground, whatever samples the step crosses. Equal to
+    /// the values at the nodes (up to rounding) when the step lies within one sample interval.
+    std::array<Ground, 3> moment_nodes(double t0, double h) const {
+        std::array<Ground, 3> g{};
+        const std::array<double, 3> x = nodes_of(*samples, t0, h);
+        const std::array<double, 3> y = samples_y ? nodes_of(*samples_y, t0, h) : std::array<double, 3>{};
+        for (int j = 0; j < 3; ++j) {
+            g[j].ax = scale * x[j];
+            g[j].ay = scale * y[j];
+        }
+        return g;
+    }
+
 private:
+    /// moment_nodes of one table, before the scale.
+    std::array<double, 3> nodes_of(const std::vector<double>& a, double t0, double h) const {
+        const int last = static_cast<int>(a.size()) - 2;
+        const double t1 = t0 + h, inv_h = 1.0 / h, inv_dt = 1.0 / dt_s;
+        int i = std::clamp(static_cast<int>(t0 * inv_dt), 0, last);
+        auto at = [&](int seg, double t) {
+            const double u = t * inv_dt - static_cast<double>(seg);
+            return a[seg] + u * (a[seg + 1] - a[seg]);
+        };
+        double m0 = 0.0, m1 = 0.0, m2 = 0.0;
+        double ta = t0, ua = at(i, t0);
+        // Simpson on each linear piece is exact for u s^n, n <= 2.
+        for (; i <= last && ta < t1; ++i) {
+            const double end = static_cast<double>(i + 1) * dt_s;
+            const double tb = std::min(t1, end);
+            if (!(tb > ta)) continue;  // t0 rounded onto the segment's end
+            const double ub = tb == end ? a[i + 1] : at(i, tb);
+            const double sa = (ta - t0) * inv_h, sb = (tb - t0) * inv_h, sm = 0.5 * (sa + sb), w = (sb - sa) / 6.0;
+            const double um = 0.5 * (ua + ub);
+            m0 += w * (ua + 4.0 * um + ub);
+            m1 += w * (sa * ua + 4.0 * sm * um + sb * ub);
+            m2 += w * (sa * sa * ua + 4.0 * sm * sm * um + sb * sb * ub);
+            ta = tb;
+            ua = ub;
+        }
+        // Simpson's (u0 + 4 um + u1) / 6 with weights 1, s, s^2 at s = 0, 1/2, 1 equal to m0, m1, m2.
+        return {6.0 * (m0 - 3.0 * m1 + 2.0 * m2), 6.0 * (m1 - m2), 6.0 * (2.0 * m2 - m1)};
+    }
+
     static double peak(const std::vector<double>& a) {
         double m = 0.0;
         for (double v : a) m = std::max(m, std::abs(v));

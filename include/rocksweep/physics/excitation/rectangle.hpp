@@ -9,6 +9,7 @@ namespace rocksweep {
 struct Rectangle {
     double ax_g, duration_s;
     static constexpr bool vectorised = true;  ///< its lane() runs in the vector loop
+    static constexpr bool nodal = false;      ///< the kernel evaluates lane() at the nodes
 
     double end_time() const { return duration_s; }
     double ax(double) const { return ax_g; }

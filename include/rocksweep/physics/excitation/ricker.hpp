@@ -11,6 +11,7 @@ namespace rocksweep {
 struct Ricker {
     double ax_g, omega;
     static constexpr bool vectorised = true;  ///< its lane() runs in the vector loop
+    static constexpr bool nodal = false;      ///< the kernel evaluates lane() at the nodes
 
     double centre() const { return 3.0 * M_PI / omega; }
     double end_time() const { return 6.0 * M_PI / omega; }
