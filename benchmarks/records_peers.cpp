@@ -47,7 +47,7 @@ struct Setting {
     double steps_per_period;  ///< events
     double impact_threshold;
     bool timed;               ///< false: only histories (the reference pair)
-    bool steps_end_at_samples = false;  ///< events: every record sample ends a step
+    bool steps_end_at_samples = true;  ///< events: every record sample ends a step (else they cross)
 };
 
 // The reference pair: two tight settings that differ in both knobs and in how a step meets the
@@ -57,9 +57,11 @@ struct Setting {
 // 1e-4, include/rocksweep/physics/history.hpp) and the paper's method (dt 0.0025 s, threshold 1e-3).
 const std::vector<Setting> kSettings = {
     {"reference", Method::events, 4096, 1e-8, false, true},
-    {"reference_check", Method::events, 2048, 1e-7, false},
-    {"events48", Method::events, 48, 1e-3, true},
-    {"events384", Method::events, 384, 1e-4, true},
+    {"reference_check", Method::events, 2048, 1e-7, false, false},
+    {"events48", Method::events, 48, 1e-3, true, true},
+    {"events48_cross", Method::events, 48, 1e-3, true, false},
+    {"events96_cross", Method::events, 96, 1e-3, true, false},
+    {"events384", Method::events, 384, 1e-4, true, true},
     {"paper", Method::paper, 0, 1e-3, true},
 };
 

@@ -128,8 +128,7 @@ private:
         if (in_pulse()) {
             b = std::min(b, t_pulse_end_);
             if (law_.switches_at_ground_zeros()) b = std::min(b, next_ax_zero());
-            // A record's samples need not end steps (its moment nodes keep the order), but a
-            // tight reference may end them there, where every step sees a smooth ground.
+            // Where a record's slope jumps, unless the steps cross its samples on moment nodes.
             if (set_.steps_end_at_samples) b = std::min(b, m_.pulse.next_kink(t_));
         }
         return b;
@@ -234,11 +233,8 @@ private:
     double next_uplift(double t, double t_stop) {
         if (m_.uplifts(t, uplift_slope_)) return t;
         if (never_uplifts_) return INFINITY;  // decided without integrating
-        // The family visited once, not at every sample scanned: CellModel::uplifts' values.
-        return visit(m_.pulse, [&](const auto& e) {
-            return m_.pulse.first_uplift(t, t_stop, [&](double x) { return lifts(e.ax(x), e.ay(x), uplift_slope_); },
-                                         [this] { return charge(); });
-        });
+        return m_.pulse.first_uplift(t, t_stop, [this](const Ground& g) { return lifts(g.ax, g.ay, uplift_slope_); },
+                                     [this] { return charge(); });
     }
 
     /// Takes the state at t + dt as the new state and applies what happened there (the event

@@ -108,14 +108,13 @@ public:
     void at_rest(const Pulse& pulse, double t_pulse_end, double t0, double t1, Charge&& charge) {
         t1 = std::min(t1, t_pulse_end);
         if (!(t1 >= t0)) return;
-        visit(pulse, [&](const auto& e) {  // once, not at every point
-            auto demand = [&](double t) { return std::abs(e.ax(t)) / (1.0 + e.ay(t)); };
-            mu_ = std::max({mu_, demand(t0), demand(t1 < t_pulse_end ? t1 : std::nextafter(t1, t0))});
-            pulse.demand_points(t0, t1, [&](double t) {
-                if (!charge()) return false;
-                if (t > t0) mu_ = std::max(mu_, demand(t));
-                return true;
-            });
+        auto demand = [](const Ground& g) { return std::abs(g.ax) / (1.0 + g.ay); };
+        auto at = [&](double t) { return demand(Ground{pulse.ax(t), pulse.ay(t)}); };
+        mu_ = std::max({mu_, at(t0), at(t1 < t_pulse_end ? t1 : std::nextafter(t1, t0))});
+        pulse.demand_points(t0, t1, [&](double t, const Ground& g) {
+            if (!charge()) return false;
+            if (t > t0) mu_ = std::max(mu_, demand(g));
+            return true;
         });
     }
     double mu_required() const { return mu_; }

@@ -58,13 +58,14 @@ struct Pulse {
     double next_sample(double t) const { return next_kink(t); }
     /// First zero of ax after t (strictly), or +inf if none: the adaptive law switches there.
     double next_ax_zero(double t) const;
-    /// First time in [t, t_stop) at which `lifts(t)` holds, to machine precision, or +inf;
-    /// `charge()` is called per scanned sample and may end the search (returns false).
+    /// First time in [t, t_stop) at which `lifts(g)` holds for the ground g there, to machine
+    /// precision, or +inf; `charge()` is called per scanned sample and may end the search
+    /// (returns false).
     template <class Lifts, class Charge>
     double first_uplift(double t, double t_stop, Lifts&& lifts, Charge&& charge) const;
     /// Visits in order the times in (t0, t1) where |ax| may peak, plus (with a vertical
-    /// component) a scan of the window; `visit(t)` returns false to stop. Times at or below t0
-    /// may come first: callers skip them.
+    /// component) a scan of the window, with the ground there; `visit(t, g)` returns false to
+    /// stop. Times at or below t0 may come first: callers skip them.
     template <class Visit>
     void demand_points(double t0, double t1, Visit&& visit) const;
 };
@@ -95,12 +96,17 @@ inline double Pulse::next_ax_zero(double t) const {
 template <class Lifts, class Charge>
 double Pulse::first_uplift(double t, double t_stop, Lifts&& lifts, Charge&& charge) const {
     return visit(*this, [&](const auto& e) {
+        using F = std::decay_t<decltype(e)>;
+        if constexpr (F::nodal) {
+            return e.first_uplift(t, t_stop, lifts, charge);  // a scan of its table
+        }
+        auto lifts_at = [&](double x) { return lifts(Ground{e.ax(x), e.ay(x)}); };
         if (!std::isfinite(e.next_scan(t))) return double{INFINITY};  // the ground does not change
         // The uplift instant in (lo, hi], hi lifting and lo not, to machine precision.
         auto bisect = [&](double lo, double hi) {
             for (int i = 0; i < 200 && hi - lo > 4 * DBL_EPSILON * hi; ++i) {
                 const double mid = 0.5 * (lo + hi);
-                (lifts(mid) ? hi : lo) = mid;
+                (lifts_at(mid) ? hi : lo) = mid;
             }
             return hi;
         };
@@ -109,11 +115,11 @@ double Pulse::first_uplift(double t, double t_stop, Lifts&& lifts, Charge&& char
             double next = std::min(e.next_scan(prev), t_stop);
             // A peak of |ax| in (prev, next) catches a pulse barely above the threshold.
             e.peaks(prev, next, [&](double tp) {
-                if (!(tp > prev && lifts(tp))) return true;
+                if (!(tp > prev && lifts_at(tp))) return true;
                 next = tp;
                 return false;
             });
-            if (next < t_stop && lifts(next)) return bisect(prev, next);
+            if (next < t_stop && lifts_at(next)) return bisect(prev, next);
             prev = next;
         }
         return double{INFINITY};
@@ -123,10 +129,16 @@ double Pulse::first_uplift(double t, double t_stop, Lifts&& lifts, Charge&& char
 template <class Visit>
 void Pulse::demand_points(double t0, double t1, Visit&& visit_point) const {
     visit(*this, [&](const auto& e) {
-        bool go = true;
-        e.peaks(t0, t1, [&](double tp) { return go = visit_point(tp); });
-        if (go && e.peak_ay() != 0.0)
-            for (double t = t0; t < t1 && visit_point(t); t = e.next_scan(t)) {}
+        using F = std::decay_t<decltype(e)>;
+        if constexpr (F::nodal) {
+            e.sample_points(t0, t1, visit_point);  // every sample: the vertical's too
+        } else {
+            auto at = [&](double t) { return visit_point(t, Ground{e.ax(t), e.ay(t)}); };
+            bool go = true;
+            e.peaks(t0, t1, [&](double tp) { return go = at(tp); });
+            if (go && e.peak_ay() != 0.0)
+                for (double t = t0; t < t1 && at(t); t = e.next_scan(t)) {}
+        }
     });
 }
 

@@ -8,7 +8,9 @@
 /// the scale).
 #include <algorithm>
 #include <array>
+#include <cfloat>
 #include <cmath>
+#include <cstddef>
 #include <vector>
 
 #include "rocksweep/physics/excitation/ground.hpp"
@@ -64,6 +66,37 @@ struct Recorded {
         for (double t = next_kink(t0); t < t1; t = next_kink(t))
             if (!visit(t)) return;
     }
+    /// Pulse::first_uplift on the table: the first sample in (t, t_stop) where lifts(ground)
+    /// holds brackets the uplift with the sample before (Eq. 1's left side minus its right is
+    /// convex on a segment: next_scan), then bisection on the interpolated ground.
+    template <class Lifts, class Charge>
+    double first_uplift(double t, double t_stop, Lifts&& lifts, Charge&& charge) const {
+        const std::size_t n = samples->size();
+        double prev = t;
+        for (std::size_t k = first_sample_after(t); k < n; ++k) {
+            if (!charge()) return INFINITY;
+            const double tk = static_cast<double>(k) * dt_s;
+            if (!(tk < t_stop)) break;
+            if (lifts(sample(k))) {
+                double lo = prev, hi = tk;
+                for (int i = 0; i < 200 && hi - lo > 4 * DBL_EPSILON * hi; ++i) {
+                    const double mid = 0.5 * (lo + hi);
+                    (lifts(Ground{ax(mid), ay(mid)}) ? hi : lo) = mid;
+                }
+                return hi;
+            }
+            prev = tk;
+        }
+        return INFINITY;
+    }
+    /// Pulse::demand_points on the table: every sample time in (t0, t1) with its ground.
+    template <class Visit>
+    void sample_points(double t0, double t1, Visit&& visit) const {
+        for (std::size_t k = first_sample_after(t0), n = samples->size(); k < n; ++k) {
+            const double tk = static_cast<double>(k) * dt_s;
+            if (!(tk < t1) || !visit(tk, sample(k))) return;
+        }
+    }
     /// Scale in ax_g (and ay_g with a vertical; 0 without, reading the horizontal table).
     GroundLane lane_coefficients() const {
         GroundLane g;
@@ -109,6 +142,17 @@ struct Recorded {
     }
 
 private:
+    /// The index of next_kink(t).
+    std::size_t first_sample_after(double t) const {
+        double k = std::max(std::floor(t / dt_s) + 1.0, 0.0);
+        if (!(k * dt_s > t)) k += 1.0;
+        return static_cast<std::size_t>(k);
+    }
+    /// The ground at sample k, as ax() and ay() there up to rounding.
+    Ground sample(std::size_t k) const {
+        return Ground{scale * (*samples)[k], samples_y ? scale * (*samples_y)[k] : 0.0};
+    }
+
     /// moment_nodes of one table, before the scale.
     std::array<double, 3> nodes_of(const std::vector<double>& a, double t0, double h) const {
         const int last = static_cast<int>(a.size()) - 2;
