@@ -159,6 +159,9 @@ IntegratorSettings make_settings(const NumericsOptions& o) {
     s.paper_dt_s = o.paper_dt_s;
     s.max_steps = o.max_steps;
     s.energy_stop = !o.no_energy_stop;
+    if (o.record_steps == "samples") s.steps_end_at_samples = true;
+    else if (o.record_steps == "cross") s.steps_end_at_samples = false;
+    else throw InputError("record-steps", o.record_steps, "one of samples, cross");
     return s;
 }
 

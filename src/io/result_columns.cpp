@@ -88,6 +88,8 @@ std::vector<Setting> numerics_settings(const IntegratorSettings& s, double impac
         num("energy_stop", "no-energy-stop", s.energy_stop ? 1.0 : 0.0, s.energy_stop ? "not given" : "given"),
         num("impact_threshold", "impact-threshold", impact_threshold, format_number(impact_threshold)),
         {"equations", "equations", to_string(equations), 0.0, true},
+        // Files from before --record-steps have no attribute: their samples ended steps.
+        {"record_steps", "record-steps", s.steps_end_at_samples ? "samples" : "cross", 0.0, true},
     };
 }
 
@@ -125,7 +127,8 @@ void compare_settings(const std::string& path, const h5::Object& obj, std::span<
     for (const Setting& x : settings) {
         std::string in_file;
         if (x.is_text) {
-            in_file = h5::read_string_attribute(obj, x.attribute);
+            const bool before = std::string_view(x.attribute) == "record_steps" && !obj.has_attribute(x.attribute);
+            in_file = before ? "samples" : h5::read_string_attribute(obj, x.attribute);
             if (in_file == x.text) continue;
         } else {
             const double value = h5::read_double_attribute(obj, x.attribute);

@@ -12,8 +12,6 @@ History sample_history(const CellModel& cell, IntegratorSettings settings, doubl
     require_open("t-end", t_end_s, 0.0, INFINITY, "a time > 0 s");
     settings.t_end_s = t_end_s;
     settings.energy_stop = false;  // a history shows the whole motion, not only its verdict
-    // and overlays a reference: every step sees a smooth ground (physics_kernel.md, "Numerics").
-    settings.steps_end_at_samples = true;
     History h;
     std::size_t k = 0;
     auto sample_time = [&](std::size_t i) { return static_cast<double>(i) * output_dt_s; };

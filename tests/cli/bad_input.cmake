@@ -45,6 +45,8 @@ bad_input(needle "--half-height = 999 \\(with b = 0.001 m\\) is invalid: h / b <
           sweep --config ${CFG} -o ${OUT} --half-width 0.001 --half-height 999)
 bad_input(equations_unknown "--equations = exact is invalid: not a known word; allowed: one of nonlinear, linearised"
           sweep --config ${CFG} -o ${OUT} --equations exact)
+bad_input(record_steps_unknown "--record-steps = crossing is invalid: not a known word; allowed: one of samples, cross"
+          suite --config ${CFG} --suite ${PROJECT_SOURCE_DIR}/configs/records_suite.csv -o ${OUT} --record-steps crossing)
 bad_input(stiffness_zero "--stiffness = 0 is invalid: out of range; allowed: a number in \\[1, 1e12\\] N/m"
           simulate --anchorage constant --stiffness 0 -o ${OUT})
 bad_input(t_end_negative "--t-end = -1 is invalid: out of range" simulate -o ${OUT} --t-end -1)

@@ -53,6 +53,7 @@ struct NumericsOptions {
     double steps_per_period = 48.0, paper_dt_s = 0.0025, impact_threshold = 1e-3;
     std::int64_t max_steps = 2'000'000;
     bool no_energy_stop = false;
+    std::string record_steps = "samples";  ///< samples: each record sample ends a step; cross
     int lanes = 8;
 };
 
