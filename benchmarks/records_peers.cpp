@@ -236,7 +236,7 @@ int main(int argc, char** argv) {
     app.add_option("--min-seconds", min_seconds, "time: wall seconds per setting, at least")->check(CLI::Range(0.0, 600.0))->capture_default_str();
     app.add_option("--lanes", lanes, "time: lanes of integrate_cells")->check(CLI::IsMember({1, 4, 8, 16}))->capture_default_str();
     app.add_option("--only", only, "time: this setting alone (for a profiler)")
-        ->check(CLI::IsMember({"events48", "events384", "paper"}));
+        ->check(CLI::IsMember({"events48", "events48_cross", "events96_cross", "events384", "paper"}));
     CLI11_PARSE(app, argc, argv);
     try {
         return run(mode, suite, out, lanes, min_seconds, only);
