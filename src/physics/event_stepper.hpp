@@ -221,7 +221,7 @@ private:
     void guess(const Events& ev, double y0, double v0) {
         double lo = lo_, hi = hi_, glo = g_lo_, ghi = g_hi_;
         int moved = 0;
-        for (int i = 0; i < 40 && hi - lo > 1e-5 * hi_; ++i) {
+        for (int i = 0; i < 40 && hi - lo > 1e-7 * hi_; ++i) {
             double x = 0.5 * (lo + hi);
             if (!std::isnan(glo) && i % 4 != 3) {
                 const double xs = lo + (hi - lo) * glo / (glo - ghi);
