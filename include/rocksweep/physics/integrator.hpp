@@ -29,7 +29,7 @@ struct IntegratorSettings {
     /// A record's samples end steps (events method): each step then sees a linear ground. Off,
     /// steps of the knob's length cross samples and keep their order through the record's
     /// moment nodes: 1.6x faster at 48 steps per period, with 8x the theta error, and on the
-    /// shared suite 15 of 8640 outcomes off a tight reference instead of 2 (physics_kernel.md,
+    /// shared suite 14 of 8640 outcomes off a tight reference instead of 2 (physics_kernel.md,
     /// "Steps across a record's samples"). On until that costs no outcome.
     bool steps_end_at_samples = true;
     /// Polled every few hundred batch steps (well under a millisecond of work); when it returns
