@@ -27,10 +27,10 @@ struct IntegratorSettings {
     bool energy_stop = true;  ///< after the pulse, decide a safe block by energy
     double t_end_s = INFINITY;  ///< stop here even if undecided (histories); INFINITY: until decided
     /// A record's samples end steps (events method): each step then sees a linear ground. Off,
-    /// steps of the knob's length cross samples and keep their order through the record's
-    /// moment nodes: 1.6x faster at 48 steps per period, with 8x the theta error, and on the
-    /// shared suite 14 of 8640 outcomes off a tight reference instead of 2 (physics_kernel.md,
-    /// "Steps across a record's samples"). On until that costs no outcome.
+    /// steps of the knob's length cross samples on the record's moment nodes (--record-steps
+    /// cross): ~1.4x faster at 48 steps per period, with 8x the theta error, third order, and on
+    /// the shared suite 14 of 8640 outcomes off a tight reference instead of 2
+    /// (physics_kernel.md, "Steps across a record's samples"). On until crossing costs no outcome.
     bool steps_end_at_samples = true;
     /// Polled every few hundred batch steps (well under a millisecond of work); when it returns
     /// true the integration throws Interrupted. Does not shape results.

@@ -1,9 +1,10 @@
 #pragma once
 /// A recorded ground motion: horizontal and (optionally) vertical samples / g at a fixed interval
 /// from t = 0, linear between samples, times a scale factor applied after interpolation. Its
-/// sample times are where it stops being smooth. A step may cross them: the kernel takes the
-/// ground at a step's nodes as moment_nodes, with which RK4 integrates the kinked ground exactly
-/// where it enters linearly, so the step keeps its fourth order (docs/physics_kernel.md,
+/// sample times are where it stops being smooth, and by default each ends a step. The kernel
+/// takes the ground at a step's nodes as moment_nodes (the values at the nodes on one linear
+/// piece), with which RK4 integrates the ground exactly where it enters linearly even when a
+/// step crosses samples (--record-steps cross; measured third order there, docs/physics_kernel.md,
 /// "Steps across a record's samples"). The samples are shared (one table per record, whatever
 /// the scale).
 #include <algorithm>
