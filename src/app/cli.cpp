@@ -139,7 +139,7 @@ void add_model_options(CLI::App& app, Options& o) {
         ->check(integer_in(100, 1'000'000'000))->capture_default_str()->group(num);
     app.add_option("--record-steps", n.record_steps,
                    "samples (every record sample ends a step) | cross (steps of the knob's length cross samples on "
-                   "moment nodes: ~1.6x faster, ~8x the theta error, docs/physics_kernel.md)")
+                   "moment nodes: 1.3-1.6x faster, ~8x the theta error, docs/physics_kernel.md)")
         ->check(one_of({"samples", "cross"}))->capture_default_str()->group(num);
     app.add_flag("--no-energy-stop", n.no_energy_stop, "Integrate every cell to rest instead of deciding by energy")->group(num);
     app.add_option("--lanes", n.lanes, "Cells advanced together in one batch")
