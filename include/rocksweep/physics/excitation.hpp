@@ -97,11 +97,7 @@ template <class Lifts, class Charge>
 double Pulse::first_uplift(double t, double t_stop, Lifts&& lifts, Charge&& charge) const {
     return visit(*this, [&](const auto& e) {
         using F = std::decay_t<decltype(e)>;
-        if constexpr (F::nodal) {
-            return e.first_uplift(t, t_stop, lifts, charge);  // a scan of its table
-        }
         auto lifts_at = [&](double x) { return lifts(Ground{e.ax(x), e.ay(x)}); };
-        if (!std::isfinite(e.next_scan(t))) return double{INFINITY};  // the ground does not change
         // The uplift instant in (lo, hi], hi lifting and lo not, to machine precision.
         auto bisect = [&](double lo, double hi) {
             for (int i = 0; i < 200 && hi - lo > 4 * DBL_EPSILON * hi; ++i) {
@@ -110,6 +106,12 @@ double Pulse::first_uplift(double t, double t_stop, Lifts&& lifts, Charge&& char
             }
             return hi;
         };
+        if constexpr (F::nodal) {
+            double lo;  // a scan of its table
+            const double hi = e.first_lifting_sample(t, t_stop, lifts, charge, lo);
+            return std::isfinite(hi) ? bisect(lo, hi) : hi;
+        }
+        if (!std::isfinite(e.next_scan(t))) return double{INFINITY};  // the ground does not change
         for (double prev = t; prev < t_stop;) {
             if (!charge()) return double{INFINITY};
             double next = std::min(e.next_scan(prev), t_stop);

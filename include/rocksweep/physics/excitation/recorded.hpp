@@ -9,7 +9,6 @@
 /// the scale).
 #include <algorithm>
 #include <array>
-#include <cfloat>
 #include <cmath>
 #include <cstddef>
 #include <vector>
@@ -67,26 +66,18 @@ struct Recorded {
         for (double t = next_kink(t0); t < t1; t = next_kink(t))
             if (!visit(t)) return;
     }
-    /// Pulse::first_uplift on the table: the first sample in (t, t_stop) where lifts(ground)
-    /// holds brackets the uplift with the sample before (Eq. 1's left side minus its right is
-    /// convex on a segment: next_scan), then bisection on the interpolated ground.
+    /// Pulse::first_uplift's scan on the table: the first sample time in (t, t_stop) where
+    /// lifts(ground) holds, or +inf; `before` is the sample (or t) before it. The two bracket the
+    /// uplift (Eq. 1's left side minus its right is convex on a segment: next_scan).
     template <class Lifts, class Charge>
-    double first_uplift(double t, double t_stop, Lifts&& lifts, Charge&& charge) const {
-        const std::size_t n = samples->size();
-        double prev = t;
-        for (std::size_t k = first_sample_after(t); k < n; ++k) {
+    double first_lifting_sample(double t, double t_stop, Lifts&& lifts, Charge&& charge, double& before) const {
+        before = t;
+        for (std::size_t k = first_sample_after(t), n = samples->size(); k < n; ++k) {
             if (!charge()) return INFINITY;
             const double tk = static_cast<double>(k) * dt_s;
             if (!(tk < t_stop)) break;
-            if (lifts(sample(k))) {
-                double lo = prev, hi = tk;
-                for (int i = 0; i < 200 && hi - lo > 4 * DBL_EPSILON * hi; ++i) {
-                    const double mid = 0.5 * (lo + hi);
-                    (lifts(Ground{ax(mid), ay(mid)}) ? hi : lo) = mid;
-                }
-                return hi;
-            }
-            prev = tk;
+            if (lifts(sample(k))) return tk;
+            before = tk;
         }
         return INFINITY;
     }
