@@ -10,9 +10,8 @@
 // timed settings and for the two tight settings that make the reference. `time` integrates
 // every run as a sweep would (integrate_cells, one thread, no observer), each setting repeated
 // until it has taken T seconds, and prints one line per setting: label, runs per pass, passes,
-// wall s, CPU s. One lane by default: a recorded ground is read per lane, not vectorised, so 8
-// lanes gain nothing on records, and with 12 runs a pass ends with idle lanes that still
-// compute (1.3-1.8x slower, measured); with the runs repeated 8 times 1 and 8 lanes tie.
+// wall s, CPU s. One lane by default: with 12 runs a pass at 8 lanes ends with idle lanes that
+// still compute (measured slower than 1 lane, for rocksweep's settings and the paper's alike).
 // benchmarks/records_peers.sh calls both, interleaved with the scipy peer, and
 // benchmarks/records_peers_table.py makes the table.
 #include <CLI/CLI.hpp>

@@ -11,7 +11,8 @@ struct Ground {
 
 /// One lane's ground coefficients, which the lane loop holds as structure of arrays. Each family
 /// documents which fields it uses; the others keep their defaults. A tabulated family (a record)
-/// reads its tables, which every lane of a vectorised batch shares, at a per-lane scale (ax_g).
+/// reads its tables at a scale (ax_g) only in its scalar questions (ax, ay); in the lane loop
+/// its lane hands the ground at the step's nodes instead (Recorded::moment_nodes).
 struct GroundLane {
     double ax_g = 0.0, ay_g = 0.0;           ///< amplitudes / g (a record: its scale factors)
     double omega = 0.0;                       ///< [rad/s]
