@@ -16,9 +16,9 @@
 #include <string>
 #include <vector>
 
-#include "rocksweep/physics/anchorage.hpp"
 #include "rocksweep/physics/integrator.hpp"
 #include "rocksweep/records/suite_sweep.hpp"
+#include "suite_smatteo.hpp"
 
 using namespace rocksweep;
 
@@ -54,14 +54,7 @@ int main(int argc, char** argv) {
         else if (k == "--outcomes") outcomes = v;
         else { std::fprintf(stderr, "suite_lanes: unknown option %s\n", k.c_str()); return 2; }
     }
-    const Block b = rectangular_block(0.30, 1.36, 3361.0);
-    const double fu = 0.4 * b.mass_kg * b.gravity;
-    std::vector<Scenario> scenarios{{"free", free_anchorage(), 0.0, 1.0},
-                                    {"constant_tf1", constant_anchorage(b, fu, b.alpha_rad), 1.0, 1.0},
-                                    {"adaptive_rho0.1", adaptive_anchorage(b, fu, b.alpha_rad, 0.1), 1.0, 0.1}};
-    const Axis radius{0.392695228684288, 3.892695228684288, radii};
-    std::vector<double> r_m = radii == 1 ? std::vector<double>{b.radius_m} : radius.values();
-    const SuiteSpec spec = make_suite_spec(csv, b, scenarios, IntensityMeasure::pga_g, Axis{0.05, 1.5, levels}, r_m);
+    const SuiteSpec spec = bench::smatteo_suite(csv, levels, radii);
     const std::size_t n = spec.cell_count();
     std::vector<CellResult> out(n);
     const auto t0 = std::chrono::steady_clock::now();

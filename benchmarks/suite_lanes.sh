@@ -17,7 +17,7 @@ old="$out/build-suite-lanes-$rev"
 if [ ! -x "$old/benchmarks/suite_lanes" ] || [ ! -x "$old/rocksweep" ]; then
   src="$(mktemp -d)"
   git archive "$rev" | tar -x -C "$src"
-  cp benchmarks/suite_lanes.cpp benchmarks/CMakeLists.txt "$src/benchmarks/"
+  cp benchmarks/suite_lanes.cpp benchmarks/suite_peers.cpp benchmarks/suite_smatteo.hpp benchmarks/CMakeLists.txt "$src/benchmarks/"
   cmake -S "$src" -B "$old" -DCMAKE_BUILD_TYPE=Release -DROCKSWEEP_BUILD_TESTS=OFF >/dev/null
   cmake --build "$old" -j 2 --target suite_lanes rocksweep >/dev/null
   rm -rf "$src"
