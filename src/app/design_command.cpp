@@ -20,6 +20,7 @@
 #include "rocksweep/core/errors.hpp"
 #include "rocksweep/app/option_checks.hpp"
 #include "rocksweep/app/run_support.hpp"
+#include "rocksweep/app/sweep_refinement.hpp"
 #include "rocksweep/io/output_claim.hpp"
 
 #ifndef ROCKSWEEP_VERSION
@@ -192,7 +193,7 @@ std::vector<RegionScore> round_scores(const Options& round_opts, const DesignCom
                                       const IntegratorSettings& settings, const DesignConstraints& limits) {
     std::vector<RegionScore> scores;
     if (cmd.hazard.suite.empty()) {
-        const SweepSpec spec = make_sweep_spec(round_opts);
+        const SweepSpec spec = sweep_spec(round_opts, cmd.run);  // the round's refinement, as its file records it
         const SweepResults r = read_spectra_results(path, spec, settings);
         for (std::size_t s = 0; s < spec.scenarios.size(); ++s) scores.push_back(score_scenario(spec, r, s, limits));
     } else {

@@ -7,6 +7,7 @@
 
 #include "rocksweep/app/cli.hpp"
 #include "rocksweep/app/run_support.hpp"
+#include "rocksweep/app/sweep_refinement.hpp"
 #include "rocksweep/core/errors.hpp"
 #include "rocksweep/grid/refine.hpp"
 #include "rocksweep/grid/refine_planes.hpp"
@@ -49,37 +50,12 @@ std::vector<IndexRange> missing_cells(const SpectraStream& stream, std::size_t t
     return todo;
 }
 
-/// The planes --refine works on: over --refine-axes (two of the grid's axes, by name), by
-/// default the spectrum's own a_p0/(alpha g) x omega_p/p. None without --refine.
-std::optional<RefinePlanes> refine_planes(const SweepSpec& spec, const SweepCommand& cmd) {
-    const std::vector<std::string> names = spec.axis_names();
-    std::vector<std::string> pair = cmd.refine_axes.empty() ? std::vector<std::string>{names[names.size() - 2], names.back()}
-                                                            : cmd.refine_axes;
-    const std::string shown = pair.size() == 2 ? pair[0] + " " + pair[1] : "";
-    if (cmd.refine_stride == 0) {
-        if (!cmd.refine_axes.empty()) throw InputError("refine-axes", shown, "only with --refine STRIDE");
-        return std::nullopt;
-    }
-    std::size_t at[2];
-    for (int k = 0; k < 2; ++k) {
-        std::string name = pair[k];
-        std::replace(name.begin(), name.end(), '-', '_');
-        const auto it = std::find(names.begin(), names.end(), name);
-        std::string all;
-        for (const std::string& n : names) all += (all.empty() ? "" : ", ") + n;
-        if (it == names.end()) throw InputError("refine-axes", shown, "two axes of the grid: " + all);
-        at[k] = static_cast<std::size_t>(it - names.begin());
-    }
-    if (at[0] == at[1]) throw InputError("refine-axes", shown, "two different axes");
-    return RefinePlanes(spec.axis_sizes(), std::min(at[0], at[1]), std::max(at[0], at[1]));
-}
-
 /// One sweep, in the order it runs: plan (constructor), agree on the output, run the passes,
 /// finish. Rank 0 alone holds the output; every rank runs the same passes.
 class SweepRun {
 public:
     SweepRun(const Options& opts, const SweepCommand& cmd, const std::string& config_text, const MpiSession& mpi)
-        : cmd_(cmd), mpi_(mpi), spec_(make_sweep_spec(opts)),  // the same on every rank, so is any error
+        : cmd_(cmd), mpi_(mpi), spec_(sweep_spec(opts, cmd)),  // the same on every rank, so is any error
           settings_(make_settings(opts.numerics)), lanes_(opts.numerics.lanes),
           part_(cmd.part.empty() ? WorkPart{} : parse_work_part(cmd.part)), log_(mpi) {
         if (part_.count > 1 && cmd.refine_stride != 0)

@@ -89,7 +89,7 @@ std::vector<Setting> numerics_settings(const IntegratorSettings& s, double impac
         num("impact_threshold", "impact-threshold", impact_threshold, format_number(impact_threshold)),
         {"equations", "equations", to_string(equations), 0.0, true},
         // Files from before --record-steps have no attribute: their samples ended steps.
-        {"record_steps", "record-steps", s.steps_end_at_samples ? "samples" : "cross", 0.0, true},
+        {"record_steps", "record-steps", s.steps_end_at_samples ? "samples" : "cross", 0.0, true, "samples"},
     };
 }
 
@@ -126,14 +126,19 @@ void compare_texts(const h5::Object& obj, std::span<const NamedText> texts, cons
 void compare_settings(const std::string& path, const h5::Object& obj, std::span<const Setting> settings) {
     for (const Setting& x : settings) {
         std::string in_file;
-        if (x.is_text) {
-            const bool before = std::string_view(x.attribute) == "record_steps" && !obj.has_attribute(x.attribute);
-            in_file = before ? "samples" : h5::read_string_attribute(obj, x.attribute);
+        if (x.absent && !obj.has_attribute(x.attribute)) {
+            if (*x.absent == '\0' || x.text == x.absent) continue;
+            in_file = x.absent;
+        } else if (x.is_text) {
+            in_file = h5::read_string_attribute(obj, x.attribute);
             if (in_file == x.text) continue;
         } else {
             const double value = h5::read_double_attribute(obj, x.attribute);
             if (value == x.number) continue;
-            in_file = std::string(x.option) == "no-energy-stop" ? (value != 0.0 ? "not given" : "given") : format_number(value);
+            const std::string option = x.option;
+            in_file = option == "no-energy-stop" ? (value != 0.0 ? "not given" : "given")
+                      : option == "refine" && value == 0.0 ? "not given"
+                                                           : format_number(value);
         }
         throw InputError(x.option, x.text,
                          in_file + ", as " + path + " was computed with (--resume continues a file only with the settings "

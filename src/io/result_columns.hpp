@@ -38,6 +38,9 @@ struct Setting {
     std::string text;     ///< what the user gave, for messages and string attributes
     double number = 0.0;  ///< for numeric attributes
     bool is_text = false;
+    /// What a file written before this setting existed (without its attribute) was computed
+    /// with: nullptr, every file has it; "" unknown, the check is skipped; else that text.
+    const char* absent = nullptr;
 };
 /// The integrator's: method, its step setting, max-steps, energy stop, impact threshold, equations.
 std::vector<Setting> numerics_settings(const IntegratorSettings& s, double impact_threshold, Equations equations);

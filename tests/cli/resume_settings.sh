@@ -41,6 +41,38 @@ echo "--method paper --paper-dt 0.001 -> $err"
 grep -Eq -- "^rocksweep: error: --paper-dt = 0.001 is invalid: 0.0025, as $paper was computed with" <<<"$err" || fail "paper-dt: message"
 [ "$(md5sum < "$paper")" = "$sum_paper" ] || fail "paper-dt: the file changed"
 n=$((n + 1))
+# Refinement chooses which cells are computed: a pass of another stride, or over other axes,
+# would pick other cells. The pair counts in grid order, whichever order it was given in.
+check "^rocksweep: error: --refine = 2 is invalid: not given, $tail" --refine 2
+refined="$dir/refined.h5"
+axis=(--axis restitution=0.8,0.9 --refine 2)
+"$rs" sweep --config "$cfg" "${grid[@]}" "${axis[@]}" -o "$refined" || fail "refined sweep"
+sum_refined=$(md5sum < "$refined")
+refuse() {  # refuse REGEX OPTIONS...: resuming the refined file with OPTIONS is refused with REGEX
+  local regex="$1"; shift
+  local err status
+  err=$("$rs" sweep --config "$cfg" "${grid[@]}" --axis restitution=0.8,0.9 "$@" -o "$refined" --resume 2>&1 >/dev/null); status=$?
+  echo "$* -> $err"
+  [ "$status" -eq 2 ] && [ "$(grep -c . <<<"$err")" -eq 1 ] || fail "$*: exit status $status or not one line"
+  grep -Eq -- "^rocksweep: error: $regex, as $refined was computed with" <<<"$err" || fail "$*: message"
+  [ "$(md5sum < "$refined")" = "$sum_refined" ] || fail "$*: the file changed"
+  n=$((n + 1))
+}
+refuse "--refine = 4 is invalid: 2" --refine 4
+refuse "--refine = not given is invalid: 2"
+refuse "--refine-axes = restitution omega_ratio is invalid: amplitude_ratio omega_ratio" --refine 2 --refine-axes restitution omega_ratio
+"$rs" sweep --config "$cfg" "${grid[@]}" "${axis[@]}" --refine-axes omega-ratio amplitude_ratio -o "$refined" --resume \
+  || fail "the same pair in the other order refused"
+# A file from before these were recorded: its samples ended steps; its refinement is unknown,
+# so any is accepted.
+before="$dir/before.h5"
+cp "$refined" "$before"
+/usr/bin/python3 -c "import h5py, sys
+with h5py.File(sys.argv[1], 'r+') as f:
+    for a in ('record_steps', 'refine_stride', 'refine_axes'): del f.attrs[a]" "$before" || fail "h5py"
+err=$("$rs" sweep --config "$cfg" "${grid[@]}" --axis restitution=0.8,0.9 --record-steps cross -o "$before" --resume 2>&1 >/dev/null)
+grep -Eq -- "^rocksweep: error: --record-steps = cross is invalid: samples, as $before" <<<"$err" || fail "old file, record-steps: $err"
+"$rs" sweep --config "$cfg" "${grid[@]}" --axis restitution=0.8,0.9 --refine 8 -o "$before" --resume || fail "old file refused a refinement"
 # Settings that do not change a bit (lanes, chunk) are free to differ.
 "$rs" sweep --config "$cfg" "${grid[@]}" --lanes 4 --chunk 3 -o "$out" --resume || fail "lanes/chunk refused"
 echo "ok: $n settings refused"

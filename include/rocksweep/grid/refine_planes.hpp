@@ -16,6 +16,8 @@ public:
     std::size_t count() const { return count_; }
     std::size_t rows() const { return sizes_[row_]; }
     std::size_t cols() const { return sizes_[col_]; }
+    std::size_t row_axis() const { return row_; }  ///< position of the row axis in C order
+    std::size_t col_axis() const { return col_; }
     /// Index within the scenario of cell (r, c) of plane `plane`.
     std::size_t cell(std::size_t plane, std::size_t r, std::size_t c) const {
         return base(plane) + r * stride_[row_] + c * stride_[col_];

@@ -55,6 +55,10 @@ struct SweepSpec {
     AmplitudeAxis amplitude_axis = AmplitudeAxis::amplitude_ratio;
     std::vector<Scenario> scenarios;
     std::vector<ParameterAxis> axes;  ///< parameter axes, slowest first; each value a spectrum more
+    // Which cells are computed: all, or those boundary refinement (--refine) picks, the rest
+    // inferred. A file records both, and --resume continues it only with the same.
+    std::size_t refine_stride = 0;   ///< spacing of refinement's first pass; 0: every cell computed
+    std::string refine_axes;         ///< the pair it refines over, "NAME NAME" as axis_names(); "" without
 
     PulseShape pulse_shape() const { return {pulse_family, pulse_cycles, phase, vertical_g, vertical_phase}; }
     /// Cells of one spectrum: the plane a_p0/(alpha g) x omega_p/p that refinement works on.
