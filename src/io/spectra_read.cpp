@@ -121,6 +121,17 @@ SweepResults read_spectra_results(const std::string& path, const SweepSpec& spec
     return r;
 }
 
+SweepSpec with_recorded_refinement(const std::string& path, SweepSpec spec) {
+    try {
+        const h5::File f = h5::File::open_read_only(path);
+        if (!f.has_attribute("refine_stride") || !f.has_attribute("refine_axes")) return spec;
+        spec.refine_stride = static_cast<std::size_t>(h5::read_double_attribute(f, "refine_stride"));
+        spec.refine_axes = h5::read_string_attribute(f, "refine_axes");
+    } catch (const Hdf5Error&) {
+    }
+    return spec;
+}
+
 h5::File spectra_detail::open_checked(const std::string& path, const SweepSpec& spec,
                                       const IntegratorSettings& settings, SweepResults* r) {
     // What the file is, in the user's words, before any HDF5 detail.

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # merge_parts.sh ROCKSWEEP CONFIG DIR: a sweep split into parts (one of them on 2 ranks) and
 # merged is bitwise the unsplit sweep; merge refuses a part of
-# another sweep, two parts that disagree and an output that is one of its inputs, leaving no
+# another sweep (or of another refinement), two parts that disagree and an output that is one of its inputs, leaving no
 # output; a missing part gives a file that `sweep --resume` completes.
 set -u
 rs="$1"; cfg="$2"; dir="$3"
@@ -62,6 +62,13 @@ done
 err=$("$rs" sweep "${grid[@]}" --part 1/2 --refine 4 -o bad4.h5 2>&1); [ $? -eq 2 ] || fail "--part with --refine accepted"
 grep -q "not with --refine" <<<"$err" || fail "message: $err"
 [ ! -e bad3.h5 ] && [ ! -e bad4.h5 ] || fail "output left by a refused sweep"
+
+# A refined sweep's file merges to itself, its refinement recorded; with a file of the unrefined
+# sweep (computed cells beside inferred ones) it is refused.
+"$rs" sweep "${grid[@]}" $q --refine 4 -o refined.h5 || fail "refined sweep"
+"$rs" merge "${grid[@]}" $q -o refined_merged.h5 refined.h5 || fail "merge of a refined file"
+h5diff --exclude-path /provenance refined.h5 refined_merged.h5 || fail "merged refined file differs"
+refused mixed.h5 "refine = 4 is invalid: not given, as ref.h5" "${grid[@]}" -o mixed.h5 refined.h5 ref.h5
 
 # A missing part: the merged file is partial, and --resume completes it to the unsplit sweep.
 msg=$("$rs" merge "${grid[@]}" -o partial.h5 p1.h5 p3.h5 2>&1) || fail "merge of two parts"

@@ -41,4 +41,10 @@ void write_spectra(const std::string& path, const SweepSpec& spec, const SweepRe
 SweepResults read_spectra_results(const std::string& path, const SweepSpec& spec,
                                   const IntegratorSettings& settings);
 
+/// `spec` with the refinement the spectra file at `path` records (refine_stride, refine_axes):
+/// what a reader that was not told it (merge) takes from its first file, and then checks the
+/// others against. `spec` unchanged if the file records none or is not a spectra file (reading
+/// it then says why).
+SweepSpec with_recorded_refinement(const std::string& path, SweepSpec spec);
+
 }  // namespace rocksweep
