@@ -1,9 +1,12 @@
 #!/usr/bin/env bash
 # kill_resume.sh ROCKSWEEP CONFIG WORKDIR [NP]
 # SIGKILL a sweep at several moments; each time the file (if any) must open, and --resume
-# must end with exactly the datasets of an uninterrupted run.
+# must end with exactly the datasets of an uninterrupted run. The first kill comes 0.1 s after
+# the start (s0.1), mostly before any checkpoint; the others at delays after the output first appears
+# (kill_job.sh says why).
 set -eu
 rs="$1"; cfg="$2"; dir="$3"; np="${4:-1}"
+source "$(dirname "${BASH_SOURCE[0]}")/kill_job.sh"
 mkdir -p "$dir"
 grid=(--anchorages free constant --theta-f-ratios 1 0.5 0.25 --omega-ratio-points 160 --amplitude-ratio-points 150
       --quiet --checkpoint-interval 0.2 --chunk 64)
@@ -17,17 +20,13 @@ ref="$dir/ref.h5"
 rm -f "$ref"
 "$rs" sweep --config "$cfg" "${grid[@]}" -o "$ref"
 partial=0
-for delay in 0.1 0.7 1.4; do
+for delay in s0.1 0 0.4; do
   out="$dir/killed-$delay.h5"
   rm -f "$out" "$out.tmp"
   "${run[@]}" sweep --config "$cfg" "${grid[@]}" -o "$out" &
   pid=$!
-  sleep "$delay"
-  # Kill the whole job at once: mpirun and every rank.
-  pkill -KILL -P "$pid" 2>/dev/null || true
-  kill -KILL "$pid" 2>/dev/null || true
-  pkill -KILL -f -- "-o $out" 2>/dev/null || true
-  wait "$pid" 2>/dev/null || true
+  if [ "$delay" = s0.1 ]; then sleep 0.1; else wait_for_output "$pid" "$out"; sleep "$delay"; fi
+  kill_job "$pid" "$out"
   if [ -f "$out" ]; then
     h5ls -r "$out" >/dev/null || { echo "killed at $delay s: file does not open"; exit 1; }
     n_done=$(h5dump -a /n_done "$out" | sed -n 's/.*(0): *//p')

@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
 # kill_stream.sh ROCKSWEEP CONFIG WORKDIR NP [REFINE]
 # The streaming writer under SIGKILL: checkpoints every 0.1 s (the shortest allowed, so that kills land in or
-# near one), killed at many instants; each time a reader must open the file while the sweep runs
+# near one), killed at many instants (two from the start, s0.05 and s0.12, before or about the first checkpoint,
+# the rest after the output first appears: kill_job.sh); each time a reader must open the file while the sweep runs
 # and after the kill, and --resume must end with result datasets bitwise those of an
 # uninterrupted run (h5diff without /provenance). REFINE (a stride) kills a refined sweep.
 set -eu
 rs="$1"; cfg="$2"; dir="$3"; np="$4"; refine="${5:-0}"
+source "$(dirname "${BASH_SOURCE[0]}")/kill_job.sh"
 rm -rf "$dir"; mkdir -p "$dir"
 grid=(--anchorages free constant --theta-f-ratios 1 0.5 --omega-ratio-points 160 --amplitude-ratio-points 120
       --quiet --checkpoint-interval 0.1 --chunk 32)
@@ -17,17 +19,17 @@ fi
 ref="$dir/ref.h5"
 "$rs" sweep --config "$cfg" "${grid[@]}" -o "$ref"
 partial=0; read_while_running=0
-for delay in 0.05 0.12 0.21 0.33 0.47 0.6 0.78 0.95 1.1 1.3; do
+for delay in s0.05 s0.12 0 0.03 0.07 0.12 0.18 0.26 0.36 0.5; do
   out="$dir/killed-$delay.h5"
   "${run[@]}" sweep --config "$cfg" "${grid[@]}" -o "$out" &
   pid=$!
-  sleep "$delay"
+  case "$delay" in
+    s*) sleep "${delay#s}" ;;
+    *) wait_for_output "$pid" "$out"; sleep "$delay" ;;
+  esac
   # A reader while the sweep runs: the file (once published) opens and its done column reads.
   if [ -f "$out" ] && h5dump -d /spectra/free/done "$out" >/dev/null 2>&1; then read_while_running=$((read_while_running + 1)); fi
-  pkill -KILL -P "$pid" 2>/dev/null || true
-  kill -KILL "$pid" 2>/dev/null || true
-  pkill -KILL -f -- "-o $out" 2>/dev/null || true
-  wait "$pid" 2>/dev/null || true
+  kill_job "$pid" "$out"
   if [ -f "$out" ]; then
     h5dump -d /spectra/free/done "$out" >/dev/null || { echo "killed at $delay s: the file does not read"; exit 1; }
     h5dump -a /complete "$out" | grep -q "(0): 0" && partial=$((partial + 1))

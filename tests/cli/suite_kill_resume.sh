@@ -7,6 +7,7 @@
 # about 3 s on one rank.
 set -eu
 rs="$1"; cfg="$2"; suite="$3"; dir="$4"; np="$5"
+source "$(dirname "${BASH_SOURCE[0]}")/kill_job.sh"
 mkdir -p "$dir"
 args=(suite --config "$cfg" --suite "$suite" --anchorages free constant adaptive --theta-f-ratios 1 --kmin-ratios 0.1
       --intensity-points 64 --radius-range 0.6 3 --radius-points 4 --steps-per-period 96 --quiet --checkpoint-interval 0.2)
@@ -25,16 +26,9 @@ for delay in 0 0.3 0.8; do
   rm -f "$out" "$out.tmp"
   "${run[@]}" "${args[@]}" -o "$out" &
   pid=$!
-  for ((i = 0; i < 600; i++)); do
-    [ -f "$out" ] && break
-    kill -0 "$pid" 2>/dev/null || break
-    sleep 0.05
-  done
+  wait_for_output "$pid" "$out"
   sleep "$delay"
-  pkill -KILL -P "$pid" 2>/dev/null || true
-  kill -KILL "$pid" 2>/dev/null || true
-  pkill -KILL -f -- "-o $out" 2>/dev/null || true
-  wait "$pid" 2>/dev/null || true
+  kill_job "$pid" "$out"
   if [ -f "$out" ]; then
     h5ls -r "$out" >/dev/null || { echo "killed at $delay s: file does not open"; exit 1; }
     h5dump -a /complete "$out" | grep -q "(0): 0" && partial=$((partial + 1))
