@@ -2,7 +2,8 @@
 # design_resume.sh ROCKSWEEP CONFIG WORKDIR
 # A design stopped between rounds (its later round files and its output missing, as after a
 # kill) and one stopped inside a round by SIGINT both end, with --resume, in exactly the
-# design file of an uninterrupted run. An existing output is refused without --resume.
+# design file of an uninterrupted run. An existing output is refused without --resume. A refined
+# design reads its rounds back, and resumes only with the same refinement.
 set -u
 rs="$1"; cfg="$2"; dir="$3"
 rm -rf "$dir"; mkdir -p "$dir"
@@ -31,4 +32,13 @@ kill -INT "$pid"; wait "$pid"; status=$?
 [ ! -e "$dir/big.h5" ] || [ "$status" -eq 0 ] || fail "a design file was written by a stopped run"
 "$rs" design --config "$cfg" "${big[@]}" -o "$dir/big.h5" --resume || fail "resume after SIGINT failed"
 h5diff --exclude-path /provenance "$dir/big_ref.h5" "$dir/big.h5" || fail "design resumed after SIGINT differs"
-echo "resumed designs identical (SIGINT status $status)"
+sigint_status=$status
+
+# Refined rounds: each round file records the refinement, the design reads them back with it.
+"$rs" design --config "$cfg" "${small[@]}" --refine 4 -o "$dir/refined.h5" || fail "refined design failed"
+rm "$dir/refined.h5" "$dir/refined.round2.h5"
+msg=$("$rs" design --config "$cfg" "${small[@]}" --refine 2 -o "$dir/refined.h5" --resume 2>&1); status=$?
+[ "$status" -eq 2 ] || fail "resume with another --refine: status $status, expected 2"
+grep -q -- "--refine = 2 is invalid: 4, as .*refined.round0.h5 was computed with" <<<"$msg" || fail "message: $msg"
+"$rs" design --config "$cfg" "${small[@]}" --refine 4 -o "$dir/refined.h5" --resume || fail "refined resume failed"
+echo "resumed designs identical (SIGINT status $sigint_status); a refined one resumed"
