@@ -77,7 +77,15 @@ public:
     /// and just after each impact. In free rocking the demand peaks as the block settles
     /// (phi, phi' -> 0), at (sin a cos a / i) / (1 - sin^2 a / i) with i = I0/(mR^2) >= 1,
     /// below the tan(alpha) that uplift itself needs: the energy decision leaves nothing out.
-    void rocking(const CellModel& m, double t, bool acting, int side, const Law& law, double theta, double theta_dot) {
+    void rocking(const CellModel& m, double t, bool acting, int side, const Law& law, double theta, double theta_dot,
+                 bool kink = false) {
+        rocking(m, t, acting ? Ground{m.pulse.ax(t), m.pulse.ay(t)} : Ground{}, side, law, theta, theta_dot, kink);
+    }
+    /// The same with the ground at t given. `kink`: t is a sample where the record turns, a kink
+    /// of the demand: its value counts as it is, and no parabola is fitted across it (one
+    /// through a kink overshoots the peak there).
+    void rocking(const CellModel& m, double t, const Ground& ground, int side, const Law& law, double theta, double theta_dot,
+                 bool kink = false) {
         const double phi = side * theta;
         // Past alpha the block is beyond its static stability limit: a fall to the ground needs
         // ever more friction (f_y -> 0 as theta_dot grows) and says nothing about survival. A
@@ -88,8 +96,8 @@ public:
         const typename Law::Coef k = law.coef(side);
         if (!(coef_ && *coef_ == k)) reset();
         coef_ = k;
-        const double ax = acting ? m.pulse.ax(t) : 0.0, ay = acting ? m.pulse.ay(t) : 0.0;
-        const BaseReactions f = law.reactions(side, ax, ay, theta, theta_dot);
+        const BaseReactions f = law.reactions(side, ground.ax, ground.ay, theta, theta_dot);
+        if (kink) reset();
         const double fx = f.fx, fy = f.fy;
         if (fy <= 0.0) pivot_up_ = true;
         else mu_ = std::max(mu_, demand_.add(t, std::abs(fx) / fy, 1.0));

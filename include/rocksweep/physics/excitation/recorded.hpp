@@ -89,6 +89,23 @@ struct Recorded {
             if (!(tk < t1) || !visit(tk, sample(k))) return;
         }
     }
+    /// The sample times in (t0, t1) where a component turns (its slope changes sign, or is 0 on
+    /// a side), with the ground there: where |f_x / f_y| of a rocking block can peak at a kink
+    /// (Lane::note_reactions_inside). Elsewhere its kink is a change of slope of one sign, near
+    /// which a peak is a smooth one, between points.
+    template <class Visit>
+    void turning_points(double t0, double t1, Visit&& visit) const {
+        for (std::size_t k = first_sample_after(t0), n = samples->size(); k < n; ++k) {
+            const double tk = static_cast<double>(k) * dt_s;
+            if (!(tk < t1)) return;
+            if (turns(k)) visit(tk, sample(k));
+        }
+    }
+    /// Whether t is exactly a sample time (as steps that end at samples end) where the record turns.
+    bool turns_at(double t) const {
+        const double k = std::round(t / dt_s);
+        return k >= 0.0 && k * dt_s == t && turns(static_cast<std::size_t>(k));
+    }
     /// Scale in ax_g (and ay_g with a vertical; 0 without, reading the horizontal table).
     GroundLane lane_coefficients() const {
         GroundLane g;
@@ -139,6 +156,13 @@ private:
         double k = std::max(std::floor(t / dt_s) + 1.0, 0.0);
         if (!(k * dt_s > t)) k += 1.0;
         return static_cast<std::size_t>(k);
+    }
+    /// Whether a component's slope changes sign at sample k (or is 0 on a side of it).
+    bool turns(std::size_t k) const {
+        auto in = [k](const std::vector<double>& a) {
+            return k > 0 && k + 1 < a.size() && (a[k] - a[k - 1]) * (a[k + 1] - a[k]) <= 0.0;
+        };
+        return in(*samples) || (samples_y && in(*samples_y));
     }
     /// The ground at sample k, as ax() and ay() there up to rounding.
     Ground sample(std::size_t k) const {
