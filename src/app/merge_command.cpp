@@ -67,7 +67,8 @@ bool same_file(const std::string& a, const std::string& b) {
 
 int run_merge(const Options& opts, const MergeCommand& cmd, const std::string& config_text) {
     // Refinement is not a merge option: the parts' is their first's (and must be the others').
-    const SweepSpec spec = cmd.parts.empty() ? make_sweep_spec(opts) : with_recorded_refinement(cmd.parts[0], make_sweep_spec(opts));
+    const SweepSpec spec =
+        cmd.parts.empty() ? make_sweep_spec(opts) : with_recorded_refinement(cmd.parts[0], make_sweep_spec(opts));
     const IntegratorSettings settings = make_settings(opts.numerics);
     for (const std::string& part : cmd.parts)
         if (same_file(part, cmd.output))

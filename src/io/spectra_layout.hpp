@@ -75,7 +75,8 @@ inline std::vector<Setting> result_settings(const SweepSpec& spec, const Integra
     all.push_back({"pulse", "pulse", to_string(spec.pulse_family), 0.0, true});
     all.push_back({"pulse_cycles", "cycles", std::to_string(spec.pulse_cycles), static_cast<double>(spec.pulse_cycles), false});
     // Files from before refinement was recorded: unknown, not checked.
-    all.push_back({"refine_stride", "refine", spec.refine_stride == 0 ? "not given" : std::to_string(spec.refine_stride), static_cast<double>(spec.refine_stride), false, ""});
+    const std::string stride = spec.refine_stride == 0 ? "not given" : std::to_string(spec.refine_stride);
+    all.push_back({"refine_stride", "refine", stride, static_cast<double>(spec.refine_stride), false, ""});
     all.push_back({"refine_axes", "refine-axes", spec.refine_axes, 0.0, true, ""});
     return all;
 }
