@@ -84,10 +84,7 @@ struct Recorded {
     /// Pulse::demand_points on the table: every sample time in (t0, t1) with its ground.
     template <class Visit>
     void sample_points(double t0, double t1, Visit&& visit) const {
-        for (std::size_t k = first_sample_after(t0), n = samples->size(); k < n; ++k) {
-            const double tk = static_cast<double>(k) * dt_s;
-            if (!(tk < t1) || !visit(tk, sample(k))) return;
-        }
+        each_sample(t0, t1, [&](std::size_t k, double tk) { return visit(tk, sample(k)); });
     }
     /// The sample times in (t0, t1) where a component turns (its slope changes sign, or is 0 on
     /// a side), with the ground there: where |f_x / f_y| of a rocking block can peak at a kink
@@ -95,11 +92,10 @@ struct Recorded {
     /// which a peak is a smooth one, between points.
     template <class Visit>
     void turning_points(double t0, double t1, Visit&& visit) const {
-        for (std::size_t k = first_sample_after(t0), n = samples->size(); k < n; ++k) {
-            const double tk = static_cast<double>(k) * dt_s;
-            if (!(tk < t1)) return;
+        each_sample(t0, t1, [&](std::size_t k, double tk) {
             if (turns(k)) visit(tk, sample(k));
-        }
+            return true;
+        });
     }
     /// Whether t is exactly a sample time (as steps that end at samples end) where the record turns.
     bool turns_at(double t) const {
@@ -156,6 +152,14 @@ private:
         double k = std::max(std::floor(t / dt_s) + 1.0, 0.0);
         if (!(k * dt_s > t)) k += 1.0;
         return static_cast<std::size_t>(k);
+    }
+    /// f(k, t_k) for each sample k with t_k in (t0, t1), in order, while it returns true.
+    template <class F>
+    void each_sample(double t0, double t1, F&& f) const {
+        for (std::size_t k = first_sample_after(t0), n = samples->size(); k < n; ++k) {
+            const double tk = static_cast<double>(k) * dt_s;
+            if (!(tk < t1) || !f(k, tk)) return;
+        }
     }
     /// Whether a component's slope changes sign at sample k (or is 0 on a side of it).
     bool turns(std::size_t k) const {
