@@ -124,12 +124,23 @@ def main(folder):
     for p in ("events48", "events48_cross", "events96_cross", "events384", "paper"):
         o = outcomes(folder, p)  # read once per peer, not once per run
         steps[p] = sum(int(o[r]["steps"]) for r in runs)
-    print(f"\n== Steps (RK4 steps over the {len(runs)} runs; one RK4 step costs about the same in every method) ==")
+    print(f"\n== Steps (RK4 steps over the {len(runs)} runs; each costs four evaluations of the equation of motion) ==")
     print(f"record samples at which the reference block is rocking: {rocking}")
     for p, n in steps.items():
         print(f"  {p:10s} {n:8d} steps, paper / this = {steps['paper'] / n:5.2f}")
     print(f"  a method with one step per rocking sample could be at most {steps['paper'] / rocking:.1f} x the "
           f"paper's method at equal cost per step")
+
+    # The speed-up is the steps' ratio times the ratio of the costs of one step (each setting's
+    # CPU time per pass over its steps, all it does counted: events, observers, rest scans), so
+    # a target speed-up asks a setting's step for at most (its steps' ratio / target) of the
+    # paper's step.
+    print(f"\n== Cost of one step (CPU time per pass / RK4 steps per pass; median over the rounds) ==")
+    print(f"{'peer':14s} {'ns/step':>8s} {'x paper step':>12s} {'for 20 x paper: at most':>24s}")
+    for p in steps:
+        ns = med([t[p][0] * len(runs) / steps[p] * 1e9 for t in rounds])
+        rel = med([(t[p][0] / steps[p]) / (t["paper"][0] / steps["paper"]) for t in rounds])
+        print(f"{p:14s} {ns[0]:8.0f} {rel[0]:12.2f} {steps['paper'] / steps[p] / 20:24.2f}")
 
 
 if __name__ == "__main__":
