@@ -24,11 +24,22 @@ def spring(phi, kappa):
     return 2.0 * kappa * (1.0 - np.cos(phi / 2))
 
 
+def gravity_below(phi, alpha):
+    """gravity(alpha, alpha) - gravity(phi, alpha) = 1 - cos(alpha - phi), without cancellation."""
+    return 2.0 * np.sin((alpha - phi) / 2) ** 2
+
+
+def spring_below(phi_f, phi, kappa):
+    """spring(phi_f, kappa) - spring(phi, kappa) = 2 kappa (cos(phi/2) - cos(phi_f/2)), without
+    cancellation."""
+    return 4.0 * kappa * np.sin((phi_f + phi) / 4) * np.sin((phi_f - phi) / 4)
+
+
 # A no-impact boundary goes to 0 where theta reaches its barrier, as the root of a difference of
 # two nearly equal potentials. Written so here, with numpy's cosine (on AVX-512 a few ulps off the
 # C library's), the reference itself was off by a relative 1e-9 near the end. So the boundaries
 # are checked as energies, 0.5 (theta_dot/p)^2, against the difference written without
-# cancellation (1 - cos x = 2 sin^2(x/2)): to a relative 1e-9 (the file is within 1e-10), or ten
+# cancellation (gravity_below, spring_below): to a relative 1e-9 (the file is within 1e-10), or ten
 # roundings of a potential of order 1 where the difference itself is near 0.
 ENERGY_ATOL = 2e-15
 
@@ -64,10 +75,9 @@ class BasinFile(unittest.TestCase):
         x = self.curve_theta
         inside = (x > 0) & (x < 1)
         th = x[inside] * self.alpha
-        # gravity(alpha) - gravity(theta) = 1 - cos(alpha - theta)
         above = g["no_impact_boundary"][()][inside]
         self.assertTrue(np.all(above > 0))
-        assert_energy(above, 2 * np.sin((self.alpha - th) / 2) ** 2)
+        assert_energy(above, gravity_below(th, self.alpha))
         want = -np.sqrt(2 * (gravity(self.alpha, self.alpha) / self.e**2 - gravity(th, self.alpha)))
         np.testing.assert_allclose(g["impact_boundary"][()][inside], want, rtol=1e-9)
 
@@ -79,12 +89,10 @@ class BasinFile(unittest.TestCase):
         x = self.curve_theta
         inside = (x > 0) & (x < 0.5)
         th = x[inside] * self.alpha
-        # barrier - gravity(theta) - spring(theta), the barrier gravity(alpha) + spring(theta_f):
-        # 1 - cos(alpha - theta) + 2 kappa (cos(theta/2) - cos(theta_f/2))
-        held = 4 * kappa * np.sin((tf + th) / 4) * np.sin((tf - th) / 4)
+        # The barrier gravity(alpha) + spring(theta_f), less the potentials at theta.
         above = g["no_impact_boundary"][()][inside]
         self.assertTrue(np.all(above > 0))
-        assert_energy(above, 2 * np.sin((self.alpha - th) / 2) ** 2 + held)
+        assert_energy(above, gravity_below(th, self.alpha) + spring_below(tf, th, kappa))
 
     def test_simulated_free_map_away_from_the_boundaries(self):
         out = self.f["basins/free/outcome"][()]
