@@ -140,7 +140,8 @@ def main(folder):
     for p in steps:
         ns = med([t[p][0] * len(runs) / steps[p] * 1e9 for t in rounds])
         rel = med([(t[p][0] / steps[p]) / (t["paper"][0] / steps["paper"]) for t in rounds])
-        print(f"{p:14s} {ns[0]:8.0f} {rel[0]:12.2f} {steps['paper'] / steps[p] / 20:24.2f}")
+        most = f"{steps['paper'] / steps[p] / 20:24.2f}" if p != "paper" else f"{'-':>24s}"
+        print(f"{p:14s} {ns[0]:8.0f} {rel[0]:12.2f} {most}")
 
 
 if __name__ == "__main__":
