@@ -28,3 +28,27 @@ TEST(Fit, RecoversTheParametersOfTheModelsOwnMotion) {
     EXPECT_NEAR(fit.params.f_slope_hz_s, p.f_slope_hz_s, 0.04);
     EXPECT_NEAR(fit.params.zeta_f, p.zeta_f, 0.1);
 }
+
+// The envelope of the fitted parameters has the record's own landmarks, and the fit's damping
+// gives the record's count of positive minima and negative maxima (to the bisection's step).
+TEST(Fit, EnvelopeOfTheFitHasTheRecordsLandmarks) {
+    RecordSource loma;
+    loma.path = ROCKSWEEP_RECORDS_DIR "/loma_prieta_1989.dat";
+    loma.units = "m/s^2";
+    RecordSource newhall;
+    newhall.path = ROCKSWEEP_RECORDS_DIR "/RSN1044_northridge_1994_newhall_rot.AT2";
+    newhall.format = RecordFormat::at2;
+    for (const RecordSource& source : {loma, newhall}) {
+        const Record r = read_record(source);
+        const FitResult fit = fit_model(r.ax_g, r.dt_s);
+        const Modulation q = modulation(fit.params);
+        const AriasTimes& m = fit.record;
+        EXPECT_NEAR(q.arias_time(0.45), m.t45_s, 1e-9 * m.t45_s) << source.path;
+        EXPECT_NEAR(q.arias_time(0.95) - q.arias_time(0.05), m.d595_s(), 1e-9 * m.d595_s()) << source.path;
+        EXPECT_DOUBLE_EQ(fit.params.arias_m_s, m.arias_m_s) << source.path;
+        EXPECT_NEAR(fit.simulated_extrema, static_cast<double>(fit.record_extrema), 0.05 * fit.record_extrema + 1.0)
+            << source.path;
+        EXPECT_GT(fit.params.zeta_f, 0.02);
+        EXPECT_LT(fit.params.zeta_f, 0.95);
+    }
+}
