@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <ctime>
+#include <filesystem>
 #include <iomanip>
 #include <optional>
 #include <sstream>
@@ -22,6 +23,7 @@
 #include "rocksweep/app/run_support.hpp"
 #include "rocksweep/app/sweep_refinement.hpp"
 #include "rocksweep/io/output_claim.hpp"
+#include "rocksweep/io/run_inputs.hpp"
 
 #ifndef ROCKSWEEP_VERSION
 #define ROCKSWEEP_VERSION "unknown"
@@ -226,6 +228,10 @@ DesignCurve curve_of(std::vector<Evaluation> e, bool with_theta_f, double near_o
 /// output is refused unless --resume or --overwrite says what to do with it.
 void claim_output(std::optional<OutputClaim>& claim, const SweepCommand& run) {
     if (run.resume && run.overwrite) throw InputError("resume", "with --overwrite", "one of --resume, --overwrite");
+    // A resumed design reads its rounds back: none may be replaced by the design's file.
+    std::error_code ec;
+    for (int round = 0; std::filesystem::exists(round_path(run.output, round), ec); ++round)
+        refuse_same_file("output", run.output, "the design's round file", round_path(run.output, round));
     claim.emplace("output", run.output);
     if (claim->exists() && !run.resume && !run.overwrite)
         throw InputError("output", run.output, "a new file; it exists: pass --resume to continue its design or --overwrite to replace it");

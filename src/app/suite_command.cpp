@@ -11,6 +11,7 @@
 #include "rocksweep/app/run_support.hpp"
 #include "rocksweep/core/errors.hpp"
 #include "rocksweep/io/output_claim.hpp"
+#include "rocksweep/io/run_inputs.hpp"
 #include "rocksweep/io/suite_file.hpp"
 #include "rocksweep/parallel/progress.hpp"
 #include "rocksweep/parallel/scheduler.hpp"
@@ -85,6 +86,13 @@ SuiteSpec make_suite_spec(const Options& opts, const SuiteCommand& cmd) {
     }
     SuiteSpec spec = make_suite_spec(cmd.suite, base.block, base.scenarios,
                                      parse_intensity_measure("intensity-measure", cmd.measure), levels, radii, alphas);
+    for (const SuiteMember& m : spec.records) {
+        const std::string where = cmd.suite + " line " + std::to_string(m.entry.line);
+        // No output may replace a record of the suite (io/run_inputs.hpp).
+        note_input("record " + m.entry.name + " of the --suite file (" + where + ")", m.entry.source.path);
+        if (m.entry.source.vertical)
+            note_input("record " + m.entry.name + "'s vertical file (" + where + ")", m.entry.source.vertical->path);
+    }
     spec.equations = base.equations;
     spec.impact_threshold = base.impact_threshold;
     spec.friction = base.friction;

@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "rocksweep/core/errors.hpp"
+#include "rocksweep/io/run_inputs.hpp"
 
 namespace rocksweep {
 
@@ -104,6 +105,7 @@ OutputClaim::OutputClaim(const std::string& field, const std::string& path) : pa
     const fs::path p(path);
     const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
     check_name(field, path, dir);
+    refuse_input_as_output(field, path);
     check_place(field, path, dir);
     lock_fd_ = take_lock(field, path);
     try {

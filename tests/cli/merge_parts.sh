@@ -50,7 +50,7 @@ refused bad2.h5 "part file = forged.h5 is invalid: a part of one sweep with p1.h
   "${grid[@]}" -o bad2.h5 p1.h5 forged.h5
 # The output may not be one of the parts; an existing output needs --overwrite.
 sum=$(md5sum < p1.h5)
-refused - "not one of the parts" "${grid[@]}" -o p1.h5 p1.h5 p2.h5
+refused - "not one of the run's inputs (it is one of the parts given" "${grid[@]}" -o p1.h5 p1.h5 p2.h5
 [ "$(md5sum < p1.h5)" = "$sum" ] || fail "a part was changed"
 refused - "--overwrite" "${grid[@]}" -o all.h5 p1.h5
 h5diff --exclude-path /provenance ref.h5 all.h5 || fail "existing output touched"
