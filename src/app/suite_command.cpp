@@ -93,6 +93,7 @@ SuiteSpec make_suite_spec(const Options& opts, const SuiteCommand& cmd) {
         if (m.entry.source.vertical)
             note_input("record " + m.entry.name + "'s vertical file (" + where + ")", m.entry.source.vertical->path);
     }
+    check_record_names(spec);  // before any work: a name the output cannot hold
     spec.equations = base.equations;
     spec.impact_threshold = base.impact_threshold;
     spec.friction = base.friction;

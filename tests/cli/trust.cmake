@@ -9,3 +9,7 @@ add_test(NAME cli.output_is_never_an_input
                  ${TR_DATA} ${TR_DIR}/own_inputs)
 set_tests_properties(cli.output_is_never_an_input PROPERTIES TIMEOUT 120)
 
+
+add_test(NAME cli.suite_record_names_checked_first
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/suite_names.sh ${RS} ${CFG} ${TR_DATA} ${TR_DIR}/suite_names)
+set_tests_properties(cli.suite_record_names_checked_first PROPERTIES TIMEOUT 120)
