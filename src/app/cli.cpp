@@ -141,6 +141,9 @@ void add_model_options(CLI::App& app, Options& o) {
                    "samples (every record sample ends a step) | cross (steps of the knob's length cross samples on "
                    "moment nodes: 1.3-1.6x faster, ~8x the theta error, docs/physics_kernel.md)")
         ->check(one_of({"samples", "cross"}))->capture_default_str()->group(num);
+    app.add_flag("--record-any-pga", n.record_any_pga,
+                 "Accept a record whose PGA as read lies outside 0.005-5 g (otherwise taken for a wrong unit, docs/records.md)")
+        ->group(num);
     app.add_flag("--no-energy-stop", n.no_energy_stop, "Integrate every cell to rest instead of deciding by energy")->group(num);
     app.add_option("--lanes", n.lanes, "Cells advanced together in one batch")
         ->check(integer_of({1, 4, 8, 16}))->capture_default_str()->group(num);

@@ -92,6 +92,10 @@ SuiteSpec make_suite_spec(const Options& opts, const SuiteCommand& cmd) {
         note_input("record " + m.entry.name + " of the --suite file (" + where + ")", m.entry.source.path);
         if (m.entry.source.vertical)
             note_input("record " + m.entry.name + "'s vertical file (" + where + ")", m.entry.source.vertical->path);
+        if (!opts.numerics.record_any_pga && !plausible_pga(m.record))
+            throw InputError("suite", where,
+                             "record " + m.entry.name + " (" + m.record.path + "): " +
+                                 implausible_pga(m.record, "pass --record-any-pga to accept every record of the suite"));
     }
     check_record_names(spec);  // before any work: a name the output cannot hold
     spec.equations = base.equations;
@@ -220,10 +224,13 @@ int run_suite(const Options& opts, const SuiteCommand& cmd, const std::string& c
     });
     const SinkFn sink = cell_results_sink(results, done_now);
 
-    if (mpi.is_root() && !cmd.run.quiet)
+    if (mpi.is_root() && !cmd.run.quiet) {
+        // What each record is as read: a wrong unit shows before the results are believed.
+        for (const SuiteMember& m : spec.records) log << "record " << m.entry.name << ": " << record_facts(m.record) << "\n";
         log << "suite: " << spec.scenarios.size() << " scenarios x " << spec.records.size() << " records x " << spec.alphas_rad.size()
             << " slendernesses x " << spec.radii_m.size() << " block sizes x " << spec.intensity.points << " levels = " << spec.cell_count() << " cells on " << mpi.size()
             << " rank(s) -> " << cmd.run.output << "\n";
+    }
     scheduler->run(start.todo, so, compute, sink);
     progress.update(done_now);
     progress.finish();
