@@ -8,6 +8,7 @@
 
 #include "rocksweep/app/memory_budget.hpp"
 #include "rocksweep/app/option_checks.hpp"
+#include "rocksweep/app/resume_check.hpp"
 #include "rocksweep/app/run_support.hpp"
 #include "rocksweep/core/errors.hpp"
 #include "rocksweep/io/output_claim.hpp"
@@ -130,12 +131,15 @@ struct Start {
     bool complete = false;  ///< resumed a finished suite: nothing to do
 };
 
-void prepare_output(Start& s, const Plan& plan, const SweepCommand& cmd, std::ostream& log) {
+void prepare_output(Start& s, const Plan& plan, const SweepCommand& cmd, const std::string& config_text, std::ostream& log) {
     if (cmd.resume && cmd.overwrite) throw InputError("resume", "with --overwrite", "one of --resume, --overwrite");
     s.claim.emplace("output", cmd.output);
     s.results.resize(plan.spec.cell_count());
     const bool exists = s.claim->exists();
-    if (exists && cmd.resume) s.results = read_suite_results(cmd.output, plan.spec, plan.settings);
+    if (exists && cmd.resume) {
+        s.results = read_suite_results(cmd.output, plan.spec, plan.settings);
+        check_resumed_config(cmd.output, read_provenance_config(cmd.output), config_text);
+    }
     else if (exists && !cmd.overwrite)
         throw InputError("output", cmd.output, "a new file; it exists: pass --resume to continue it or --overwrite to replace it");
     s.todo = missing_ranges(s.results.done);
@@ -182,7 +186,7 @@ int run_suite(const Options& opts, const SuiteCommand& cmd, const std::string& c
 
     Start start;
     const OutputVerdict verdict = agree_on_output(
-        mpi, log, [&] { prepare_output(start, plan, cmd.run, log); return start.complete; }, [&] { start.claim.reset(); });
+        mpi, log, [&] { prepare_output(start, plan, cmd.run, config_text, log); return start.complete; }, [&] { start.claim.reset(); });
     if (verdict != OutputVerdict::go) return exit_status(verdict);
 
     const Provenance base{ROCKSWEEP_VERSION, config_text, utc_now(), mpi.size(), 0.0};

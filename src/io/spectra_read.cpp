@@ -121,6 +121,21 @@ SweepResults read_spectra_results(const std::string& path, const SweepSpec& spec
     return r;
 }
 
+void check_spectra_file(const std::string& path, const SweepSpec& spec, const IntegratorSettings& settings) {
+    spectra_detail::open_checked(path, spec, settings, nullptr).close();
+}
+
+std::string read_provenance_config(const std::string& path) {
+    try {
+        const h5::File f = h5::File::open_read_only(path);
+        if (!f.exists("provenance")) return "";
+        const h5::Group g = f.open_group("provenance");
+        return g.has_attribute("config") ? h5::read_string_attribute(g, "config") : "";
+    } catch (const Hdf5Error&) {
+        return "";
+    }
+}
+
 SweepSpec with_recorded_refinement(const std::string& path, SweepSpec spec) {
     try {
         const h5::File f = h5::File::open_read_only(path);

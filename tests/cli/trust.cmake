@@ -36,6 +36,9 @@ set_tests_properties(cli.suite_prints_records PROPERTIES
 add_test(NAME cli.records_shared_plausible
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/records_plausible.sh ${RS} ${TR_DATA} ${TR_DIR}/plausible)
 
+# sweep's side of --resume checking every option: resume_settings.sh (cli.resume_with_other_settings_is_refused).
+add_test(NAME cli.suite_resume_checks_every_option
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/resume_options.sh ${RS} ${CFG} ${TR_DATA} ${TR_DIR}/resume_options)
 add_test(NAME cli.suite_record_names_checked_first
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/suite_names.sh ${RS} ${CFG} ${TR_DATA} ${TR_DIR}/suite_names)
 set_tests_properties(cli.suite_record_names_checked_first PROPERTIES TIMEOUT 120)
