@@ -73,9 +73,17 @@ int run_merge(const Options& opts, const MergeCommand& cmd, const std::string& c
     SweepResults merged;
     merged.resize(total);
     std::vector<std::uint32_t> from(total, 0);  // 1 + the part a cell came from
+    std::vector<std::string> warnings;           // printed once nothing can refuse the merge any more
     for (std::size_t p = 0; p < cmd.parts.size(); ++p) {
         // Throws naming the file when its grid, scenarios, block, pulse or settings differ.
         SweepResults part = read_spectra_results(cmd.parts[p], spec, settings);
+        // Throws naming the part if its data changed since its run stored their checksum.
+        const std::vector<std::string> unverified = verify_results_checksums(cmd.parts[p], spec, part);
+        if (!unverified.empty())
+            warnings.push_back("warning: " + cmd.parts[p] + " stores no checksum of its results (" +
+                               (unverified.size() == spec.scenarios.size() ? std::string("any scenario")
+                                                                            : "scenario " + unverified.front()) +
+                               "): written before rocksweep stored one, or killed before it finished; merged unverified\n");
         for (std::size_t i = 0; i < total; ++i) {
             if (!part.done[i]) continue;
             if (!merged.done[i]) {
@@ -93,6 +101,7 @@ int run_merge(const Options& opts, const MergeCommand& cmd, const std::string& c
     prov.config_text = config_text;
     prov.ranks = 1;
     write_spectra(cmd.output, spec, merged, prov, settings);
+    for (const std::string& w : warnings) std::cerr << w;  // even with --quiet: the data were not verified
     const std::size_t done = merged.done_count();
     if (!cmd.quiet) {
         std::cerr << "merged " << cmd.parts.size() << " file(s): " << done << " of " << total << " cells -> "

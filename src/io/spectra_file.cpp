@@ -13,6 +13,7 @@
 #include "rocksweep/core/errors.hpp"
 #include "rocksweep/io/grid_layout.hpp"
 #include "rocksweep/io/hdf5.hpp"
+#include "rocksweep/io/results_checksum.hpp"
 #include "spectra_layout.hpp"
 
 namespace rocksweep {
@@ -133,6 +134,9 @@ void write_scenario(const h5::Group& spectra, std::size_t index, const SweepSpec
     const Scenario& s = spec.scenarios[index];
     const h5::Group g = spectra.create_group(s.name);
     h5::write_attribute(g, "index", index);  // position in the config: group listings sort by name
+    // Of results written whole; a streamed file's is filled in place when its run finishes.
+    const std::size_t per = spec.cells_per_scenario();
+    h5::write_attribute(g, results_checksum_attribute, r ? results_checksum(*r, index * per, per) : std::int64_t{0});
     for (const NamedText& t : scenario_texts(s)) h5::write_attribute(g, t.name, t.value);
     for (const NamedNumber& n : scenario_numbers(s)) h5::write_attribute(g, n.name, n.value);
     const GridGroup grid(g, axes);

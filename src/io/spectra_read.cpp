@@ -8,6 +8,7 @@
 #include "rocksweep/core/errors.hpp"
 #include "rocksweep/io/grid_layout.hpp"
 #include "rocksweep/io/hdf5.hpp"
+#include "rocksweep/io/results_checksum.hpp"
 #include "rocksweep/io/spectra_file.hpp"
 #include "spectra_layout.hpp"
 
@@ -119,6 +120,28 @@ SweepResults read_spectra_results(const std::string& path, const SweepSpec& spec
     SweepResults r;
     spectra_detail::open_checked(path, spec, settings, &r);
     return r;
+}
+
+std::vector<std::string> verify_results_checksums(const std::string& path, const SweepSpec& spec, const SweepResults& r) {
+    std::vector<std::string> unverified;
+    const h5::File f = h5::File::open_read_only(path);
+    const h5::Group spectra = f.open_group("spectra");
+    const std::size_t per = spec.cells_per_scenario();
+    for (std::size_t s = 0; s < spec.scenarios.size(); ++s) {
+        const std::string& name = spec.scenarios[s].name;
+        const h5::Group g = spectra.open_group(name);
+        const std::int64_t stored =
+            g.has_attribute(results_checksum_attribute) ? h5::read_int64_attribute(g, results_checksum_attribute) : 0;
+        if (stored == 0) {
+            unverified.push_back(name);
+            continue;
+        }
+        if (results_checksum(r, s * per, per) != stored)
+            throw InputError("part file", path,
+                             "a part whose results match the checksum it stored when its run finished (those of scenario " +
+                                 name + " do not: they were changed after they were written)");
+    }
+    return unverified;
 }
 
 void check_spectra_file(const std::string& path, const SweepSpec& spec, const IntegratorSettings& settings) {

@@ -1,4 +1,5 @@
-# Issue 21, "data a user can lose or get wrong".
+# Issue 21, "data a user can lose or get wrong": outputs that are inputs, records in the wrong
+# unit, resume with other options, merge of edited parts, suite names the output cannot hold.
 # Included from CMakeLists.txt, which defines bad_input(), RS, OUT, CFG and EXPECT.
 set(TR_DATA ${PROJECT_SOURCE_DIR}/tests/data)
 set(TR_DIR ${CMAKE_CURRENT_BINARY_DIR}/trust)
@@ -39,6 +40,9 @@ add_test(NAME cli.records_shared_plausible
 # sweep's side of --resume checking every option: resume_settings.sh (cli.resume_with_other_settings_is_refused).
 add_test(NAME cli.suite_resume_checks_every_option
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/resume_options.sh ${RS} ${CFG} ${TR_DATA} ${TR_DIR}/resume_options)
+add_test(NAME cli.merge_verifies_checksums.mpirun=2
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/merge_checksum.sh ${RS} ${CFG} ${TR_DIR}/merge_checksum)
+set_tests_properties(cli.merge_verifies_checksums.mpirun=2 PROPERTIES TIMEOUT 120 PROCESSORS 2)
 add_test(NAME cli.suite_record_names_checked_first
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/suite_names.sh ${RS} ${CFG} ${TR_DATA} ${TR_DIR}/suite_names)
 set_tests_properties(cli.suite_record_names_checked_first PROPERTIES TIMEOUT 120)

@@ -41,6 +41,12 @@ void write_spectra(const std::string& path, const SweepSpec& spec, const SweepRe
 SweepResults read_spectra_results(const std::string& path, const SweepSpec& spec,
                                   const IntegratorSettings& settings);
 
+/// Compares each scenario's results in `r` (read from `path`) with the checksum the file stored
+/// when its run finished (results_checksum.hpp). Throws InputError("part file", path, ...)
+/// naming the first scenario that differs; returns the names of the scenarios that have none
+/// (a file from before checksums, or a run killed before it finished).
+std::vector<std::string> verify_results_checksums(const std::string& path, const SweepSpec& spec, const SweepResults& r);
+
 /// The checks of read_spectra_results alone, the results left unread.
 void check_spectra_file(const std::string& path, const SweepSpec& spec, const IntegratorSettings& settings);
 
