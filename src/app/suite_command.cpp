@@ -188,7 +188,7 @@ int run_suite(const Options& opts, const SuiteCommand& cmd, const std::string& c
         }
         last_save = MpiSession::wall_time();
     };
-    const auto scheduler = make_mpi_scheduler(mpi.comm());
+    const auto scheduler = make_scheduler(mpi);
     std::size_t todo = 0;
     for (const IndexRange& r : start.todo) todo += r.count;
     Progress progress(todo, cmd.run.quiet || !mpi.is_root());
