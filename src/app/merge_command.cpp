@@ -58,6 +58,18 @@ std::string describe_cell(const SweepSpec& spec, std::size_t i) {
            format_short(spec.omega_ratio.at(k % n_omega));
 }
 
+/// read_spectra_results, its refusals of the file itself told as refusals of this part.
+SweepResults read_part(const std::string& part, const SweepSpec& spec, const IntegratorSettings& settings) {
+    try {
+        return read_spectra_results(part, spec, settings);
+    } catch (const InputError& e) {
+        if (e.value() != part) throw;
+        std::string allowed = e.allowed();
+        if (const auto at = allowed.find("a rocksweep spectra file"); at == 0) allowed.replace(0, 24, "a rocksweep part file");
+        throw InputError("part file", part, allowed);
+    }
+}
+
 bool same_file(const std::string& a, const std::string& b) {
     std::error_code ec;
     return std::filesystem::equivalent(a, b, ec);
@@ -83,7 +95,7 @@ int run_merge(const Options& opts, const MergeCommand& cmd, const std::string& c
     std::vector<std::uint32_t> from(total, 0);  // 1 + the part a cell came from
     for (std::size_t p = 0; p < cmd.parts.size(); ++p) {
         // Throws naming the file when its grid, scenarios, block, pulse or settings differ.
-        SweepResults part = read_spectra_results(cmd.parts[p], spec, settings);
+        SweepResults part = read_part(cmd.parts[p], spec, settings);
         for (std::size_t i = 0; i < total; ++i) {
             if (!part.done[i]) continue;
             if (!merged.done[i]) {

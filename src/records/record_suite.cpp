@@ -186,4 +186,21 @@ private:
 
 RecordSuite read_record_suite(const std::string& path) { return SuiteReader(path).read(); }
 
+Record read_suite_record(const RecordSuite& suite, const SuiteRecord& entry) {
+    // read_record's fields (simulate's options without dashes) and the suite's columns for them.
+    static const std::map<std::string, std::string> column_of{
+        {"record", "file"},          {"record-format", "format"}, {"record-units", "units"},
+        {"record-dt", "dt"},         {"record-column", "column"}, {"record-scale", "scale"},
+        {"record-skip-lines", "skip_lines"}, {"record-vertical", "vertical_file"},
+        {"record-vertical-column", "vertical_column"}};
+    try {
+        return read_record(entry.source);
+    } catch (const InputError& e) {
+        const auto it = column_of.find(e.field());
+        const std::string column = it == column_of.end() ? e.field() : it->second;
+        throw InputError("suite", suite.path + " line " + std::to_string(entry.line),
+                         "column '" + column + "' = " + e.value() + ": " + e.allowed());
+    }
+}
+
 }  // namespace rocksweep

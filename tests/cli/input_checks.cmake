@@ -17,6 +17,10 @@ set(SUITE_HEAD "name,file,format,units,column,vertical_column")
 file(WRITE ${IC}/column0.csv "${SUITE_HEAD}\nec,${ICDATA}/elcentro_1940_NS.dat,time_accel,g,0,\n")
 bad_input(suite_column_zero "--suite = .*column0.csv line 2 is invalid: column '0' is not a whole number >= 1"
           suite --config ${CFG} --suite ${IC}/column0.csv -o ${OUT})
+file(WRITE ${IC}/same_column.csv "${SUITE_HEAD}\nmx,${ICDATA}/mexico_city_1985_sct.txt,time_accel,g,3,3\n")
+bad_input(suite_vertical_same_column
+          "--suite = .*same_column.csv line 2 is invalid: column 'vertical_column' = 3: a column other than the horizontal component's \\(3\\)"
+          suite --config ${CFG} --suite ${IC}/same_column.csv -o ${OUT})
 file(WRITE ${IC}/semicolon.csv "name;file;format;units\nec;${ICDATA}/elcentro_1940_NS.dat;time_accel;g\n")
 bad_input(suite_semicolons "--suite = .*semicolon.csv line 1 is invalid: cells separated by ',' \\(this header is separated by ';'"
           suite --config ${CFG} --suite ${IC}/semicolon.csv -o ${OUT})
@@ -37,3 +41,13 @@ set_tests_properties(cli.config_hex_integers PROPERTIES PASS_REGULAR_EXPRESSION 
 file(WRITE ${IC}/hex0.toml "omega-ratio-points = 0x0\n")
 bad_input(config_hex_zero "--omega-ratio-points = 0 is invalid: out of range" sweep --config ${IC}/hex0.toml -o ${OUT})
 
+# 9. Messages: -o=NAME, a record of a suite in the suite's terms, a damaged part file.
+add_test(NAME cli.bad_input.output_with_equals
+         COMMAND ${EXPECT} 2 "--output = =-x.h5 is invalid: a file name that does not begin with '=' \\(write -o FILE or --output=FILE\\)"
+                 =-x.h5 -- ${RS} simulate --config ${CFG} -o=-x.h5)
+set_tests_properties(cli.bad_input.output_with_equals PROPERTIES WORKING_DIRECTORY ${IC})
+file(WRITE ${IC}/absent_column.csv "${SUITE_HEAD}\nec,${ICDATA}/elcentro_1940_NS.dat,time_accel,g,7,\n")
+bad_input(suite_record_in_suite_terms "--suite = .*absent_column.csv line 2 is invalid: column 'column' = "
+          suite --config ${CFG} --suite ${IC}/absent_column.csv -o ${OUT})
+add_test(NAME cli.damaged_part_named
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/damaged_part.sh ${RS} ${CFG} ${IC}/damaged)
