@@ -50,11 +50,11 @@ void add_model_options(CLI::App& app, Options& o) {
     // Sizes from a 1 mm specimen to a 1 km tower; masses from 1 g to a 1 Mt monolith.
     app.add_option("--half-width", b.half_width_m, "Half-width b of the rectangular block [m]")
         ->check(number_in(1e-3, 1e3, m))->capture_default_str()->group(blk);
-    app.add_option("--half-height", b.half_height_m, "Half-height h [m]")->check(number_in(1e-3, 1e3, m))->capture_default_str()->group(blk);
+    app.add_option("--half-height", b.half_height_m, "Half-height h [m], at most 1e4 b")->check(number_in(1e-3, 1e3, m))->capture_default_str()->group(blk);
     app.add_option("--mass", b.mass_kg, "Mass m [kg]")->check(number_in(1e-3, 1e9, kg))->capture_default_str()->group(blk);
     app.add_option("--radius", b.radius_m, "Equivalent block: R, corner to centre of mass [m] (with --alpha)")
         ->check(number_in(1e-3, 1e3, m))->group(blk);
-    app.add_option("--alpha", b.alpha_rad, "Equivalent block: slenderness angle [rad] (with --radius)")
+    app.add_option("--alpha", b.alpha_rad, "Equivalent block: slenderness angle [rad] (with --radius), at least atan(1e-4) (h/b <= 1e4)")
         ->check(number_in(min_alpha_rad, M_PI / 2, rad, false, true))->group(blk);
     app.add_option("--inertia-ratio", b.inertia_ratio, "Equivalent block: I0/(m R^2) (default 4/3)")
         ->check(number_in(1.0, max_inertia_ratio, none))->group(blk);

@@ -10,12 +10,15 @@
 #include <ctime>
 #include <filesystem>
 #include <iomanip>
+#include <map>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <tuple>
 
 #include "rocksweep/design/design_criterion.hpp"
 #include "rocksweep/io/design_file.hpp"
+#include "rocksweep/io/hdf5.hpp"
 #include "rocksweep/io/suite_file.hpp"
 #include "rocksweep/design/design_search.hpp"
 #include "rocksweep/core/errors.hpp"
@@ -224,17 +227,76 @@ DesignCurve curve_of(std::vector<Evaluation> e, bool with_theta_f, double near_o
     return c;
 }
 
+/// "key = value" lines of an effective config (tables and comments skipped), by key.
+std::map<std::string, std::string> config_values(const std::string& text) {
+    std::map<std::string, std::string> values;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) {
+        const auto eq = line.find(" = ");
+        if (line.empty() || line[0] == '[' || line[0] == '#' || eq == std::string::npos) continue;
+        values[line.substr(0, eq)] = line.substr(eq + 3);
+    }
+    return values;
+}
+
+/// The options of `config_text` must be those `path` (a round or the design file) was computed
+/// with: the first that differs is named with both values, as the user wrote the option.
+void check_same_options(const std::string& path, const std::string& config_text) {
+    std::string stored;
+    try {
+        stored = h5::read_string_attribute(h5::File::open_read_only(path).open_group("provenance"), "config");
+    } catch (const Hdf5Error&) {
+        throw InputError("output", path, "a file of a rocksweep design to resume (it is damaged or not one)");
+    }
+    const auto was = config_values(stored), now = config_values(config_text);
+    std::set<std::string> keys;
+    for (const auto& [key, value] : was) keys.insert(key);
+    for (const auto& [key, value] : now) keys.insert(key);
+    for (const std::string& key : keys) {
+        const auto w = was.find(key), n = now.find(key);
+        const std::string before = w == was.end() ? "not given" : w->second, after = n == now.end() ? "(not given)" : n->second;
+        if (before != after)  // "design.refine" is --refine in [design]
+            throw InputError(key.substr(key.rfind('.') + 1), after,
+                             before + ", as " + path + " was computed with (--resume continues a design only with the "
+                                                       "options it was started with; --overwrite starts afresh)");
+    }
+}
+
 /// Claims the design's output on rank 0 (the rounds claim their own files); an existing
-/// output is refused unless --resume or --overwrite says what to do with it.
-void claim_output(std::optional<OutputClaim>& claim, const SweepCommand& run) {
+/// output, or the round files of an unfinished design for it, is refused unless --resume or
+/// --overwrite says what to do with it. Returns true when a resumed design is already complete.
+bool claim_output(std::optional<OutputClaim>& claim, const SweepCommand& run, const std::string& config_text) {
     if (run.resume && run.overwrite) throw InputError("resume", "with --overwrite", "one of --resume, --overwrite");
     // A resumed design reads its rounds back: none may be replaced by the design's file.
     std::error_code ec;
     for (int round = 0; std::filesystem::exists(round_path(run.output, round), ec); ++round)
         refuse_same_file("output", run.output, "the design's round file", round_path(run.output, round));
     claim.emplace("output", run.output);
-    if (claim->exists() && !run.resume && !run.overwrite)
-        throw InputError("output", run.output, "a new file; it exists: pass --resume to continue its design or --overwrite to replace it");
+    const std::string round0 = round_path(run.output, 0);
+    if (!run.resume && !run.overwrite) {
+        if (claim->exists())
+            throw InputError("output", run.output, "a new file; it exists: pass --resume to continue its design or --overwrite to replace it");
+        if (std::filesystem::exists(round0))
+            throw InputError("output", run.output,
+                             "a new design; an unfinished design for it left " + round0 +
+                                 ": pass --resume to continue it or --overwrite to start afresh");
+    }
+    if (!run.resume) return false;
+    // A finished design has removed its rounds: it is complete if its options are these.
+    if (claim->exists()) {
+        check_same_options(run.output, config_text);
+        return true;
+    }
+    if (std::filesystem::exists(round0)) check_same_options(round0, config_text);
+    return false;
+}
+
+/// Removes the round files once the design file holds their results; none is resumable any more.
+/// Also those of an earlier, longer design overwritten by this one.
+void remove_rounds(const std::string& output, int rounds) {
+    std::error_code ec;
+    for (int r = 0; std::filesystem::remove(round_path(output, r), ec) || r < rounds; ++r) {
+    }
 }
 
 void print_summary(std::ostream& log, const DesignReport& r) {
@@ -257,14 +319,18 @@ int run_design(const Options& opts, const DesignCommand& cmd, const std::string&
 
     std::optional<OutputClaim> claim;
     const OutputVerdict verdict = agree_on_output(
-        mpi, log, [&] { claim_output(claim, cmd.run); return false; }, [&] { claim.reset(); });
+        mpi, log, [&] { return claim_output(claim, cmd.run, config_text); }, [&] { claim.reset(); });
+    if (verdict == OutputVerdict::nothing_to_do && !cmd.run.quiet)
+        log << cmd.run.output << ": design already complete; nothing to do\n";
     if (verdict != OutputVerdict::go) return exit_status(verdict);
 
     const double t0 = MpiSession::wall_time();
     const BracketSearch by_k(problem.stiffness), by_rho(problem.kmin);
     RoundValues values{by_k.first_round(), by_rho.first_round()};
     Ledger ledger;
+    int rounds_run = 0;
     for (int round = 0; !values.empty(); ++round) {
+        rounds_run = round + 1;
         const Options round_opts = round_options(opts, problem, values, round == 0);
         SweepCommand run = cmd.run;
         run.output = round_path(cmd.run.output, round);
@@ -319,6 +385,7 @@ int run_design(const Options& opts, const DesignCommand& cmd, const std::string&
         log << "rocksweep: error: " << e.what() << "\n";
         return 1;
     }
+    remove_rounds(cmd.run.output, rounds_run);
     if (!cmd.run.quiet) {
         print_summary(log, report);
         log << "wrote " << cmd.run.output << "\n";

@@ -57,6 +57,18 @@ std::string describe_cell(const SweepSpec& spec, std::size_t i) {
            format_short(spec.omega_ratio.at(k % n_omega));
 }
 
+/// read_spectra_results, its refusals of the file itself told as refusals of this part.
+SweepResults read_part(const std::string& part, const SweepSpec& spec, const IntegratorSettings& settings) {
+    try {
+        return read_spectra_results(part, spec, settings);
+    } catch (const InputError& e) {
+        if (e.value() != part) throw;
+        std::string allowed = e.allowed();
+        if (const auto at = allowed.find("a rocksweep spectra file"); at == 0) allowed.replace(0, 24, "a rocksweep part file");
+        throw InputError("part file", part, allowed);
+    }
+}
+
 }  // namespace
 
 int run_merge(const Options& opts, const MergeCommand& cmd, const std::string& config_text) {
@@ -76,7 +88,7 @@ int run_merge(const Options& opts, const MergeCommand& cmd, const std::string& c
     std::vector<std::string> warnings;           // printed once nothing can refuse the merge any more
     for (std::size_t p = 0; p < cmd.parts.size(); ++p) {
         // Throws naming the file when its grid, scenarios, block, pulse or settings differ.
-        SweepResults part = read_spectra_results(cmd.parts[p], spec, settings);
+        SweepResults part = read_part(cmd.parts[p], spec, settings);
         // Throws naming the part if its data changed since its run stored their checksum.
         const std::vector<std::string> unverified = verify_results_checksums(cmd.parts[p], spec, part);
         if (!unverified.empty())

@@ -2,7 +2,9 @@
 // every scenario; scheduled, checkpointed and resumed like `rocksweep sweep`.
 #include "rocksweep/app/suite_command.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
 #include <iomanip>
 #include <optional>
 
@@ -69,6 +71,16 @@ void check_suite_options(const CLI::App& app, const std::vector<std::string>& ar
         throw InputError("radius-points", std::to_string(cmd.radius_points), "1 without --radius-range (the block's own R)");
     if (cmd.alpha_range.empty() && cmd.alpha_points != 1)
         throw InputError("alpha-points", std::to_string(cmd.alpha_points), "1 without --alpha-range (the block's own alpha)");
+    // Each threshold is one row of the fragility datasets, read as increasing damage.
+    const std::vector<double>& states = cmd.damage_states;
+    if (std::adjacent_find(states.begin(), states.end(), std::greater_equal<double>()) != states.end()) {
+        std::string given;
+        for (double x : states) {
+            if (!given.empty()) given += ' ';
+            given += format_short(x);
+        }
+        throw InputError("damage-states", given, "thresholds in increasing order, each once (one fragility row each)");
+    }
 }
 
 SuiteSpec make_suite_spec(const Options& opts, const SuiteCommand& cmd) {
@@ -205,7 +217,7 @@ int run_suite(const Options& opts, const SuiteCommand& cmd, const std::string& c
         }
         last_save = MpiSession::wall_time();
     };
-    const auto scheduler = make_mpi_scheduler(mpi.comm());
+    const auto scheduler = make_scheduler(mpi);
     std::size_t todo = 0;
     for (const IndexRange& r : start.todo) todo += r.count;
     Progress progress(todo, cmd.run.quiet || !mpi.is_root());

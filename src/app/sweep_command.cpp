@@ -166,7 +166,7 @@ void SweepRun::save() {
 }
 
 ScheduleStats SweepRun::run_pass(const std::vector<IndexRange>& todo) {
-    const auto scheduler = make_mpi_scheduler(mpi_.comm());
+    const auto scheduler = make_scheduler(mpi_);
     std::size_t n = 0, done_now = 0;
     for (const IndexRange& r : todo) n += r.count;
     Progress bar(n, cmd_.quiet || !mpi_.is_root());

@@ -28,6 +28,9 @@ std::string lock_of(const std::string& path) { return path + lock_suffix; }
 
 void check_name(const std::string& field, const std::string& path, const fs::path& dir) {
     if (path.empty()) throw InputError(field, "\"\"", "a file name");
+    // -o=x.h5 hands CLI11 the value "=x.h5" (only --output=x.h5 splits at '='): never a name meant.
+    if (path[0] == '=')
+        throw InputError(field, path, "a file name that does not begin with '=' (write -o FILE or --output=FILE)");
     const std::string file = fs::path(path).filename().string();
     if (file.empty() || file == "." || file == "..") throw InputError(field, path, "a file name, not a directory");
     long name_max = ::pathconf(dir.c_str(), _PC_NAME_MAX);

@@ -174,13 +174,13 @@ h5::File spectra_detail::open_checked(const std::string& path, const SweepSpec& 
                                       const IntegratorSettings& settings, SweepResults* r) {
     // What the file is, in the user's words, before any HDF5 detail.
     auto not_spectra = [&](const std::string& what) {
-        return InputError("output", path, "a rocksweep spectra file to resume; it is " + what);
+        return InputError("output", path, "a rocksweep spectra file; it is " + what);
     };
     std::optional<h5::File> opened;  // the file, or a message about what it is
     try {
         opened.emplace(h5::File::open_read_only(path));
     } catch (const Hdf5Error&) {
-        throw not_spectra("not an HDF5 file");
+        throw not_spectra("damaged or not an HDF5 file at all");
     }
     const h5::File& f = *opened;
     if (f.exists("theta") && f.exists("t")) throw not_spectra("a history written by rocksweep simulate");
@@ -196,9 +196,10 @@ h5::File spectra_detail::open_checked(const std::string& path, const SweepSpec& 
         read_contents(path, f, spec, settings, r);
         return std::move(*opened);
     } catch (const Hdf5Error& e) {
-        // A missing attribute or dataset means this is not a file we wrote for this layout.
+        // A missing attribute or dataset, or one HDF5 cannot read: not a file we wrote, or
+        // one damaged since (HDF5's own text often says nothing more).
         throw InputError("spectra file", path,
-                         std::string("a rocksweep spectra file (") + e.what() + ")");
+                         std::string("a rocksweep spectra file; it is damaged or not one (") + e.what() + ")");
     }
 }
 

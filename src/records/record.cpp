@@ -176,6 +176,9 @@ Components read_text_components(const RecordSource& s, Record& r) {
     if (same_file && s.vertical->column == 0)
         throw InputError("record-vertical-column", "(missing)", "the column of " + s.path + " holding the vertical component");
     if (s.vertical) r.vertical_column = acceleration_column("record-vertical-column", s.format, s.vertical->column);
+    if (same_file && r.vertical_column == r.column)
+        throw InputError("record-vertical-column", std::to_string(r.vertical_column),
+                         "a column other than the horizontal component's (" + std::to_string(r.column) + ") of " + s.path);
     std::vector<detail::Wanted> columns{{r.column, "record-column"}};
     const detail::Wanted vertical{r.vertical_column, "record-vertical-column"};
     if (same_file) columns.push_back(vertical);
