@@ -69,6 +69,7 @@ void write_search(const h5::Group& g, const SearchSettings& s, const char* range
 void write_root(const h5::File& f, const DesignReport& r) {
     const Block& b = r.hazard.block;
     h5::write_attribute(f, "title", "rocksweep anchorage design");
+    h5::write_attribute(f, "Conventions", h5::cf_conventions);
     h5::write_attribute(f, "format_version", format_version);
     h5::write_attribute(f, "criterion", criterion_words);
     h5::write_attribute(f, "half_width_m", b.half_width_m());

@@ -87,6 +87,7 @@ struct Columns {
 void write_root(const h5::File& f, const SweepSpec& spec, const IntegratorSettings& settings,
                 const SweepResults* r) {
     h5::write_attribute(f, "title", "rocksweep overturning spectra");
+    h5::write_attribute(f, "Conventions", h5::cf_conventions);
     h5::write_attribute(f, "format_version", format_version);
     for (const NamedNumber& n : root_numbers(spec)) h5::write_attribute(f, n.name, n.value);
     // Numbers that are integers in meaning (max_steps, energy_stop) stay float64 like the

@@ -13,7 +13,7 @@ namespace rocksweep {
 
 namespace {
 
-constexpr std::int64_t format_version = 2;  // 2: the alpha_rad axis
+constexpr std::int64_t format_version = 3;  // 2: the alpha_rad axis; 3: median -> median_intensity
 constexpr const char* kind = "suite";
 
 GridAxis record_axis(const SuiteSpec& spec) {
@@ -163,10 +163,11 @@ void write_fragility(const h5::Group& scenario, const SuiteSpec& spec, const Sui
     };
     const char* units = intensity_units(spec.measure);
     const FitColumn columns[] = {
-        {"median", [](const FragilityFit& x) { return x.curve.median; }, units, "lognormal fit: median intensity"},
+        // Not `median`: xarray's Dataset.median() would hide a variable of that name (fr.median).
+        {"median_intensity", [](const FragilityFit& x) { return x.curve.median; }, units, "lognormal fit: median intensity"},
         {"beta", [](const FragilityFit& x) { return x.curve.beta; }, "1", "lognormal fit: dispersion (log standard deviation)"},
-        {"median_lo", [](const FragilityFit& x) { return x.median_lo; }, units, "95 % interval of the median: low end"},
-        {"median_hi", [](const FragilityFit& x) { return x.median_hi; }, units, "95 % interval of the median: high end"},
+        {"median_intensity_lo", [](const FragilityFit& x) { return x.median_lo; }, units, "95 % interval of the median: low end"},
+        {"median_intensity_hi", [](const FragilityFit& x) { return x.median_hi; }, units, "95 % interval of the median: high end"},
         {"beta_lo", [](const FragilityFit& x) { return x.beta_lo; }, "1", "95 % interval of beta: low end"},
         {"beta_hi", [](const FragilityFit& x) { return x.beta_hi; }, "1", "95 % interval of beta: high end"},
         {"se_ln_median", [](const FragilityFit& x) { return x.se_ln_median; }, "1", "standard error of ln(median)"},
@@ -189,6 +190,7 @@ void write_fragility(const h5::Group& scenario, const SuiteSpec& spec, const Sui
 void write_contents(const h5::File& f, const SuiteSpec& spec, const SweepResults& r, const std::vector<DamageState>& states,
                     const Provenance& prov, const IntegratorSettings& settings) {
     h5::write_attribute(f, "title", "rocksweep record-suite sweep");
+    h5::write_attribute(f, "Conventions", h5::cf_conventions);
     h5::write_attribute(f, "format_version", format_version);
     h5::write_attribute(f, "kind", kind);
     io::write_numbers(f, io::block_numbers(spec.block));
