@@ -36,3 +36,10 @@ risk_refused(not_a_suite_file "--suite-file = .*hazard_illustrative_pga.csv is i
              --suite-file ${PROJECT_SOURCE_DIR}/configs/hazard_illustrative_pga.csv --hazard ${RISK_DIR}/pgv.csv)
 risk_refused(exposure_zero "--exposure-years = 0 is invalid: out of range"
              --suite-file ${RISK_SUITE} --hazard ${RISK_DIR}/pgv.csv --exposure-years 0)
+
+# The figure of the risk file risk.sh wrote: legible PNG and PDF (tests/scripts/check_figure.py).
+set_tests_properties(cli.risk.plain_and_openquake_agree PROPERTIES FIXTURES_SETUP risk_file)
+add_test(NAME cli.risk.figure
+         COMMAND /usr/bin/python3 ${PROJECT_SOURCE_DIR}/tests/scripts/check_figure.py --expect ${RISK_DIR}/figure
+                 -- /usr/bin/python3 ${PROJECT_SOURCE_DIR}/scripts/plot_risk.py ${RISK_DIR}/run/plain.h5 -o ${RISK_DIR}/figure)
+set_tests_properties(cli.risk.figure PROPERTIES FIXTURES_REQUIRED risk_file TIMEOUT 120)
