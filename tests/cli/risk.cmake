@@ -43,3 +43,16 @@ add_test(NAME cli.risk.figure
          COMMAND /usr/bin/python3 ${PROJECT_SOURCE_DIR}/tests/scripts/check_figure.py --expect ${RISK_DIR}/figure
                  -- /usr/bin/python3 ${PROJECT_SOURCE_DIR}/scripts/plot_risk.py ${RISK_DIR}/run/plain.h5 -o ${RISK_DIR}/figure)
 set_tests_properties(cli.risk.figure PROPERTIES FIXTURES_REQUIRED risk_file TIMEOUT 120)
+
+# Risk-based design: the criterion is the annual rate at the site (tests/cli/design_risk.sh);
+# --hazard needs --suite, and a curve of the suite's measure.
+add_test(NAME cli.risk.design
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/design_risk.sh ${RS} ${PROJECT_SOURCE_DIR} ${RISK_DIR}/design)
+set_tests_properties(cli.risk.design PROPERTIES TIMEOUT 180 PROCESSORS 2)
+add_test(NAME cli.risk.design_hazard_needs_suite
+         COMMAND ${EXPECT} 2 "--hazard = .*pgv.csv is invalid: an option of design --suite" ${RISK_DIR}/bad_design.h5 --
+                 ${RS} design --config ${PROJECT_SOURCE_DIR}/configs/design.toml --hazard ${RISK_DIR}/pgv.csv -o ${RISK_DIR}/bad_design.h5)
+add_test(NAME cli.risk.design_measure_mismatch
+         COMMAND ${EXPECT} 2 "--hazard = .*pgv.csv \\(PGV\\) is invalid: a hazard curve of the suite's intensity measure, pga_g"
+                 ${RISK_DIR}/bad_design.h5 -- ${RS} design --config ${PROJECT_SOURCE_DIR}/configs/design.toml
+                 --suite ${PROJECT_SOURCE_DIR}/configs/records_suite.csv --hazard ${RISK_DIR}/pgv.csv -o ${RISK_DIR}/bad_design.h5)
