@@ -345,6 +345,7 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
         if (*design) check_design_options(app, args, design_cmd);
         if (*basin) check_basin_options(app, args);
         if (*suite) check_suite_options(app, args, suite_cmd);
+        if (*risk) check_risk_options(app, args);
     } catch (const CLI::Success& e) {  // --help, --help-all, --version: to stdout, once
         if (mpi.is_root()) app.exit(e);
         return 0;

@@ -73,6 +73,14 @@ CLI::App* add_risk_command(CLI::App& app, RiskCommand& cmd) {
     return r;
 }
 
+void check_risk_options(const CLI::App& app, const std::vector<std::string>& args) {
+    std::vector<std::string> model;
+    for (const CLI::Option* o : app.get_options())
+        if (o != app.get_config_ptr() && !o->get_lnames().empty()) model.push_back("--" + o->get_lnames().front());
+    refuse_typed(app, args, model, "an option of the commands that run a model; risk reads the suite file, which holds the block "
+                                   "and anchorages it was run with");
+}
+
 bool risk_defines_run(const std::string& name) {
     return name == "suite-file" || name == "hazard" || name == "hazard-site" || name == "exposure-years";
 }

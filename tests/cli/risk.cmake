@@ -56,3 +56,7 @@ add_test(NAME cli.risk.design_measure_mismatch
          COMMAND ${EXPECT} 2 "--hazard = .*pgv.csv \\(PGV\\) is invalid: a hazard curve of the suite's intensity measure, pga_g"
                  ${RISK_DIR}/bad_design.h5 -- ${RS} design --config ${PROJECT_SOURCE_DIR}/configs/design.toml
                  --suite ${PROJECT_SOURCE_DIR}/configs/records_suite.csv --hazard ${RISK_DIR}/pgv.csv -o ${RISK_DIR}/bad_design.h5)
+add_test(NAME cli.risk.model_option_refused
+         COMMAND ${EXPECT} 2 "--mass = 3 is invalid: an option of the commands that run a model; risk reads the suite file"
+                 ${RISK_DIR}/bad.h5 -- ${RS} --mass 3 risk --suite-file ${RISK_SUITE} --hazard ${RISK_DIR}/pgv.csv -o ${RISK_DIR}/bad.h5)
+set_tests_properties(cli.risk.model_option_refused PROPERTIES FIXTURES_REQUIRED risk_suite)

@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 
 #include <string>
+#include <vector>
 
 namespace rocksweep {
 
@@ -17,6 +18,10 @@ struct RiskCommand {
 
 /// Adds `risk` and its options to `app`.
 CLI::App* add_risk_command(CLI::App& app, RiskCommand& cmd);
+
+/// Refuses, naming it, a model option typed on the command line (block, anchorage, grid,
+/// numerics): risk reads them from nothing, the suite file holds what was run. Throws InputError.
+void check_risk_options(const CLI::App& app, const std::vector<std::string>& args);
 
 /// The options a replay of `risk` needs (its own, not the block's or the run's): the provenance.
 bool risk_defines_run(const std::string& name);
