@@ -11,6 +11,8 @@
 #include "rocksweep/risk/risk_integral.hpp"
 #include "rocksweep/risk/suite_risk.hpp"
 #include "rocksweep/core/errors.hpp"
+#include <cstdint>
+#include <span>
 
 namespace rocksweep {
 namespace {
@@ -155,6 +157,51 @@ TEST(SuiteRisk, RefusesAHazardOfAnotherMeasure) {
     EXPECT_NO_THROW(check_same_measure(pga, "site.csv", t));
     t.measure = "scale";
     EXPECT_THROW(check_same_measure(pga, "site.csv", t), InputError);
+}
+
+TEST(SuiteRisk, RatesIntervalsAndStatusesOfOneScenario) {
+    // One block, two states: an ok fit with intervals, and a fit that did not converge to a curve.
+    const HazardCurve h = power_law(1e-4, 2.5, 0.02, 3.0);
+    SuiteFragilityTable t;
+    t.measure = "pga_g";
+    t.states = {"rotation>=0.5", "overturning"};
+    t.alphas = {0.2};
+    t.radii = {1.0};
+    t.levels = {0.1, 0.2, 0.4, 0.8};
+    ScenarioFragility s;
+    s.name = "free";
+    s.fraction = {0.0, 0.25, 0.5, 1.0, 0.0, 0.0, 0.25, 0.5};
+    s.fraction_lo = {0.0, 0.1, 0.3, 0.8, 0.0, 0.0, 0.1, 0.3};
+    s.fraction_hi = {0.2, 0.5, 0.7, 1.0, 0.2, 0.2, 0.5, 0.7};
+    s.median = {0.4, NAN};
+    s.beta = {0.5, NAN};
+    s.median_lo = {0.3, NAN};
+    s.median_hi = {0.5, NAN};
+    s.beta_lo = {0.35, NAN};
+    s.beta_hi = {0.7, NAN};
+    s.fit_status = {static_cast<std::uint8_t>(FitStatus::ok), static_cast<std::uint8_t>(FitStatus::not_identifiable)};
+    t.scenarios = {s};
+    const SuiteRisk r = suite_risk(h, t);
+    ASSERT_EQ(r.scenarios.size(), 1u);
+    const ScenarioRisk& k = r.scenarios[0];
+    const double exact = 1e-4 * std::pow(0.4, -2.5) * std::exp(2.5 * 2.5 * 0.25 / 2);
+    EXPECT_NEAR(k.rate_fit[0] / exact, 1.0, 1e-6);
+    // The box's corners: the lowest rate at the high median and the low beta, the highest at the other corner.
+    const double lo = 1e-4 * std::pow(0.5, -2.5) * std::exp(2.5 * 2.5 * 0.35 * 0.35 / 2);
+    const double hi = 1e-4 * std::pow(0.3, -2.5) * std::exp(2.5 * 2.5 * 0.7 * 0.7 / 2);
+    EXPECT_NEAR(k.rate_fit_lo[0] / lo, 1.0, 1e-6);
+    EXPECT_NEAR(k.rate_fit_hi[0] / hi, 1.0, 1e-6);
+    EXPECT_TRUE(std::isnan(k.rate_fit[1]) && std::isnan(k.rate_fit_lo[1]) && std::isnan(k.density_fit[r.deaggregation_intensity.size()]));
+    for (std::size_t b = 0; b < 2; ++b) {
+        EXPECT_LT(k.rate_empirical_lo[b], k.rate_empirical[b]);
+        EXPECT_GT(k.rate_empirical_hi[b], k.rate_empirical[b]);
+        EXPECT_NEAR(k.rate_empirical[b], annual_rate(h, t.levels, std::span<const double>(s.fraction).subspan(4 * b, 4)).rate, 0.0);
+    }
+    // The deaggregation integrates to the rate (trapezoid in ln x on its grid: to 1 %).
+    const std::vector<double>& x = r.deaggregation_intensity;
+    double area = 0;
+    for (std::size_t i = 0; i + 1 < x.size(); ++i) area += 0.5 * (k.density_fit[i] + k.density_fit[i + 1]) * std::log(x[i + 1] / x[i]);
+    EXPECT_NEAR(area / k.rate_fit[0], 1.0, 0.01);
 }
 
 }  // namespace
