@@ -14,6 +14,7 @@
 #include "rocksweep/app/config_file.hpp"
 #include "rocksweep/app/design_command.hpp"
 #include "rocksweep/app/info_command.hpp"
+#include "rocksweep/app/risk_command.hpp"
 #include "rocksweep/app/suite_command.hpp"
 #include "rocksweep/core/errors.hpp"
 #include "rocksweep/grid/parameter_axis.hpp"
@@ -331,10 +332,12 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
     CLI::App* basin = add_basin_command(app, basin_cmd);
     SuiteCommand suite_cmd;
     CLI::App* suite = add_suite_command(app, suite_cmd);
+    RiskCommand risk_cmd;
+    CLI::App* risk = add_risk_command(app, risk_cmd);
     for (CLI::App* sub : {sweep, merge, sim, info, design, basin, suite})
         sub->footer("Block, pulse, anchorage, grid and numerics options (and --config): rocksweep --help");
 
-    const std::vector<std::string> subcommands{"sweep", "merge", "simulate", "info", "design", "basin", "suite"};
+    const std::vector<std::string> subcommands{"sweep", "merge", "simulate", "info", "design", "basin", "suite", "risk"};
     app.config_formatter(std::make_shared<TomlConfig>(subcommands, std::vector<std::string>{"block", "pulse", "anchorage", "grid", "numerics"},
                                                       [config] { return config->as<std::string>(); }));
     const std::vector<std::string> args(argv + (argc > 0 ? 1 : 0), argv + argc);
@@ -345,6 +348,7 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
         if (*design) check_design_options(app, args, design_cmd);
         if (*basin) check_basin_options(app, args);
         if (*suite) check_suite_options(app, args, suite_cmd);
+        if (*risk) check_risk_options(app, args);
         note_file_inputs(app);
     } catch (const CLI::Success& e) {  // --help, --help-all, --version: to stdout, once
         if (mpi.is_root()) app.exit(e);
@@ -359,7 +363,9 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
     if (*sim) use_history_defaults(app, opts.numerics);
     const std::string command = app.get_subcommands().at(0)->get_name();
     const std::string config_text =
-        effective_config(app, command, [&](const std::string& name) { return defines_run(command, name, opts); });
+        effective_config(app, command, [&](const std::string& name) {
+            return command == "risk" ? risk_defines_run(name) : defines_run(command, name, opts);
+        });
     try {
         if (*info) {
             if (mpi.is_root()) print_info(opts, std::cout);
@@ -376,6 +382,7 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
         }
         if (*basin) return mpi.is_root() ? run_basin(opts, basin_cmd, config_text) : 0;
         if (*suite) return run_suite(opts, suite_cmd, config_text, mpi);
+        if (*risk) return mpi.is_root() ? run_risk(risk_cmd, config_text) : 0;
         return run_sweep(opts, sweep_cmd, config_text, mpi);
     } catch (const InputError& e) {
         err << "rocksweep: error: " << cli_message(e) << "\n";

@@ -29,6 +29,11 @@ struct DesignCommand {
     /// --suite and its levels: the hazard is the records of a suite instead of the pulse region
     /// (hazard.suite empty: the region). Its run options are not used.
     SuiteCommand hazard;
+    /// With --suite: a site's hazard curve; the criterion becomes the annual rate of the
+    /// unacceptable state there (app/design_risk.hpp, docs/risk.md). Empty: the share of the runs.
+    std::string hazard_curve;
+    int hazard_site = -1;
+    double exposure_years = 50;
 };
 
 /// The design command's own options (the run options are the sweep's, added by cli.cpp).
