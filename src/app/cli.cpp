@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "rocksweep/app/basin_command.hpp"
+#include "rocksweep/app/synth_command.hpp"
 #include "rocksweep/app/config_file.hpp"
 #include "rocksweep/app/design_command.hpp"
 #include "rocksweep/app/info_command.hpp"
@@ -334,10 +335,12 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
     CLI::App* suite = add_suite_command(app, suite_cmd);
     RiskCommand risk_cmd;
     CLI::App* risk = add_risk_command(app, risk_cmd);
-    for (CLI::App* sub : {sweep, merge, sim, info, design, basin, suite})
+    SynthCommand synth_cmd;
+    CLI::App* synth = add_synth_command(app, synth_cmd);
+    for (CLI::App* sub : {sweep, merge, sim, info, design, basin, suite, synth})
         sub->footer("Block, pulse, anchorage, grid and numerics options (and --config): rocksweep --help");
 
-    const std::vector<std::string> subcommands{"sweep", "merge", "simulate", "info", "design", "basin", "suite", "risk"};
+    const std::vector<std::string> subcommands{"sweep", "merge", "simulate", "info", "design", "basin", "suite", "risk", "synth"};
     app.config_formatter(std::make_shared<TomlConfig>(subcommands, std::vector<std::string>{"block", "pulse", "anchorage", "grid", "numerics"},
                                                       [config] { return config->as<std::string>(); }));
     const std::vector<std::string> args(argv + (argc > 0 ? 1 : 0), argv + argc);
@@ -347,8 +350,9 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
         check_combinations(app, chosen->get_name(), opts, args);
         if (*design) check_design_options(app, args, design_cmd);
         if (*basin) check_basin_options(app, args);
-        if (*suite) check_suite_options(app, args, suite_cmd);
+        if (*suite) check_suite_options(app, *suite, args, suite_cmd);
         if (*risk) check_risk_options(app, args);
+        if (*synth) check_synthetic_options(*synth, synth_cmd.source);
         note_file_inputs(app);
     } catch (const CLI::Success& e) {  // --help, --help-all, --version: to stdout, once
         if (mpi.is_root()) app.exit(e);
@@ -383,6 +387,7 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
         if (*basin) return mpi.is_root() ? run_basin(opts, basin_cmd, config_text) : 0;
         if (*suite) return run_suite(opts, suite_cmd, config_text, mpi);
         if (*risk) return mpi.is_root() ? run_risk(risk_cmd, config_text) : 0;
+        if (*synth) return mpi.is_root() ? run_synth(synth_cmd) : 0;
         return run_sweep(opts, sweep_cmd, config_text, mpi);
     } catch (const InputError& e) {
         err << "rocksweep: error: " << cli_message(e) << "\n";

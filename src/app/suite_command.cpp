@@ -18,6 +18,7 @@
 #include "rocksweep/io/suite_file.hpp"
 #include "rocksweep/parallel/progress.hpp"
 #include "rocksweep/parallel/scheduler.hpp"
+#include "rocksweep/synthetic/model_motions.hpp"
 
 #ifndef ROCKSWEEP_VERSION
 #define ROCKSWEEP_VERSION "unknown"
@@ -44,7 +45,11 @@ CLI::App* add_suite_command(CLI::App& app, SuiteCommand& cmd) {
     s->fallthrough();
     add_run_options(*s, cmd.run);
     add_suite_hazard_options(*s, cmd);
-    s->get_option("--suite")->required();
+    add_synthetic_options(*s, cmd.synthetic);
+    s->add_option("--synthetic-count", cmd.synthetic.count,
+                  "Motions of the stochastic model (--arias ... or --record to fit; docs/synthetic.md) beside or "
+                  "instead of --suite's records, made on the ranks, never stored")
+        ->check(integer_in(0, 100000000))->capture_default_str();
     s->add_option("--radius-range", cmd.radius_range,
                   "Block sizes R from LO to HI [m], at the block's density (default: the block's own R)")
         ->expected(2)->check(number_in(1e-3, 1e3, "m"));
@@ -61,10 +66,20 @@ CLI::App* add_suite_command(CLI::App& app, SuiteCommand& cmd) {
     return s;
 }
 
-void check_suite_options(const CLI::App& app, const std::vector<std::string>& args, const SuiteCommand& cmd) {
+void check_suite_options(const CLI::App& app, const CLI::App& suite, const std::vector<std::string>& args,
+                         const SuiteCommand& cmd) {
     refuse_typed(app, args,
                  pulse_region_options,
                  "an option of sweep; the suite's ground motions are its records");
+    if (cmd.suite.empty() && cmd.synthetic.count == 0)
+        throw InputError("suite", "(not given)", "a suite of records (CSV), or --synthetic-count N motions of a model, or both");
+    if (cmd.synthetic.count > 0)
+        check_synthetic_options(suite, cmd.synthetic);
+    else
+        refuse_typed(app, args,
+                     {"--arias", "--d595", "--tmid", "--f-mid", "--f-slope", "--zeta", "--fc", "--dt", "--motion-duration",
+                      "--seed", "--record", "--record-format", "--record-units", "--record-dt", "--record-column"},
+                     "an option of the synthetic motions, which need --synthetic-count N");
     if (cmd.run.refine_stride != 0)
         throw InputError("refine", std::to_string(cmd.run.refine_stride), "0 for suite (refinement is for spectra maps)");
     if (cmd.radius_range.empty() && cmd.radius_points != 1)
@@ -97,9 +112,17 @@ SuiteSpec make_suite_spec(const Options& opts, const SuiteCommand& cmd) {
                              "angles below " + format_short(squat, 4) + " rad, where Housner's e of this block's I0/(mR^2) = " +
                                  format_short(ratio, 4) + " reaches 0 (the block is too squat to rock)");
     }
+    std::shared_ptr<const MotionSource> motions;
+    if (cmd.synthetic.count > 0) {
+        const ResolvedSource r = resolve(cmd.synthetic, nullptr);
+        motions = std::make_shared<synthetic::ModelMotions>(synthetic::Generator(r.params, r.dt_s, r.duration_s),
+                                                             cmd.synthetic.seed, cmd.synthetic.count);
+    }
     SuiteSpec spec = make_suite_spec(cmd.suite, base.block, base.scenarios,
-                                     parse_intensity_measure("intensity-measure", cmd.measure), levels, radii, alphas);
+                                     parse_intensity_measure("intensity-measure", cmd.measure), levels, radii, alphas,
+                                     motions);
     for (const SuiteMember& m : spec.records) {
+        if (m.motion >= 0) continue;  // made, not read: no file, its PGA is the model's
         const std::string where = cmd.suite + " line " + std::to_string(m.entry.line);
         // No output may replace a record of the suite (io/run_inputs.hpp).
         note_input("record " + m.entry.name + " of the --suite file (" + where + ")", m.entry.source.path);
@@ -242,7 +265,9 @@ int run_suite(const Options& opts, const SuiteCommand& cmd, const std::string& c
 
     if (mpi.is_root() && !cmd.run.quiet) {
         // What each record is as read: a wrong unit shows before the results are believed.
-        for (const SuiteMember& m : spec.records) log << "record " << m.entry.name << ": " << record_facts(m.record) << "\n";
+        for (const SuiteMember& m : spec.records)
+            if (m.motion < 0) log << "record " << m.entry.name << ": " << record_facts(m.record) << "\n";
+        if (spec.motions) log << "synthetic motions: " << spec.motions->describe() << "\n";
         log << "suite: " << spec.scenarios.size() << " scenarios x " << spec.records.size() << " records x " << spec.alphas_rad.size()
             << " slendernesses x " << spec.radii_m.size() << " block sizes x " << spec.intensity.points << " levels = " << spec.cell_count() << " cells on " << mpi.size()
             << " rank(s) -> " << cmd.run.output << "\n";

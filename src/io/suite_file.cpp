@@ -199,6 +199,8 @@ void write_contents(const h5::File& f, const SuiteSpec& spec, const SweepResults
     h5::write_attribute(f, "intensity_units", intensity_units(spec.measure));
     h5::write_attribute(f, "intensity_long_name", intensity_long_name(spec.measure));
     h5::write_attribute(f, "suite_file", spec.suite_path);
+    // Synthetic motions are not stored: what makes them is (docs/synthetic.md).
+    if (spec.motions) h5::write_attribute(f, "synthetic_motions", spec.motions->describe());
     h5::write_attribute(f, "rocksweep_version", prov.version);
     io::write_progress(f, r);
     write_records(f, spec);

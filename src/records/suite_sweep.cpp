@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <utility>
 
 #include "rocksweep/core/errors.hpp"
@@ -78,38 +79,64 @@ std::size_t SuiteSpec::index(const Coordinates& c) const {
            c.level;
 }
 
-CellModel SuiteSpec::cell(std::size_t index) const {
+CellModel SuiteSpec::cell(std::size_t index, const Pulse* ground) const {
     const Coordinates at = coordinates(index);
     const Scenario& sc = scenarios.at(at.scenario);
     const Block b = block_of(alphas_rad[at.alpha], radii_m[at.radius]);
     // Every cell of a record shares its samples (both components); the level scales them per lane.
     const SuiteMember& rec = records[at.record];
-    Pulse pulse = rec.pulse.record && b.gravity == block.gravity ? rec.pulse : to_pulse(rec.record, b.gravity);
+    if (rec.motion >= 0 && !ground) throw std::logic_error("SuiteSpec::cell: a made motion needs its ground");
+    Pulse pulse = ground ? *ground
+                  : rec.pulse.record && b.gravity == block.gravity ? rec.pulse
+                                                                   : to_pulse(rec.record, b.gravity);
     pulse.record_scale = scale_factor(at.record, at.alpha, at.level);
     return make_cell_model(b, anchorage_on(sc, block, b), pulse, equations, impact_threshold);
 }
 
+namespace {
+
+// A level is reached by dividing by the motion's own measure: one without it (all zeros) cannot
+// be scaled to any level.
+void require_measure(IntensityMeasure measure, const SuiteMember& m, const std::string& where) {
+    const double own = measure == IntensityMeasure::pgv_m_s ? m.measures.pgv_m_s : m.measures.pga_g;
+    if (measure != IntensityMeasure::scale && !(own > 0.0))
+        throw InputError("suite", where,
+                         "records with a non-zero " + std::string(info(measure).name) + " to scale to a level (" +
+                             m.entry.name + " has none)");
+}
+
+}  // namespace
+
 SuiteSpec make_suite_spec(const std::string& suite_path, const Block& block, std::vector<Scenario> scenarios,
                           IntensityMeasure measure, Axis intensity, std::vector<double> radii_m,
-                          std::vector<double> alphas_rad) {
+                          std::vector<double> alphas_rad, std::shared_ptr<const MotionSource> motions) {
     SuiteSpec spec;
     spec.block = block;
     spec.suite_path = suite_path;
-    const RecordSuite suite = read_record_suite(suite_path);
-    spec.metadata_columns = suite.metadata_columns;
-    for (const SuiteRecord& entry : suite.records) {
-        SuiteMember m{entry, read_suite_record(suite, entry), {}, {}};
+    if (!suite_path.empty()) {
+        const RecordSuite suite = read_record_suite(suite_path);
+        spec.metadata_columns = suite.metadata_columns;
+        for (const SuiteRecord& entry : suite.records) {
+            SuiteMember m{entry, read_suite_record(suite, entry), {}, {}, -1};
+            m.measures = intensity_measures(m.record);
+            m.pulse = to_pulse(m.record, block.gravity);
+            require_measure(measure, m, suite_path + " line " + std::to_string(entry.line));
+            spec.records.push_back(std::move(m));
+        }
+    }
+    // Made motions: measured now, their samples dropped; the cells make them again.
+    for (std::size_t i = 0; motions && i < motions->size(); ++i) {
+        SuiteMember m;
+        m.entry.name = motions->name(i);
+        m.entry.metadata.assign(spec.metadata_columns.size(), "");
+        m.record = motions->motion(i);
         m.measures = intensity_measures(m.record);
-        m.pulse = to_pulse(m.record, block.gravity);
-        // A level is reached by dividing by the record's own measure: a record without one
-        // (all zeros) cannot be scaled to any level.
-        const double own = measure == IntensityMeasure::pgv_m_s ? m.measures.pgv_m_s : m.measures.pga_g;
-        if (measure != IntensityMeasure::scale && !(own > 0.0))
-            throw InputError("suite", suite_path + " line " + std::to_string(entry.line),
-                             "records with a non-zero " + std::string(info(measure).name) + " to scale to a level (" +
-                                 entry.name + " has none)");
+        m.record.ax_g = {};
+        m.motion = static_cast<std::ptrdiff_t>(i);
+        require_measure(measure, m, "synthetic motion " + std::to_string(i));
         spec.records.push_back(std::move(m));
     }
+    spec.motions = std::move(motions);
     if (spec.records.empty()) throw InputError("suite", suite_path, "a suite with at least one record");
     spec.measure = measure;
     spec.intensity = intensity;
@@ -124,7 +151,21 @@ SuiteSpec make_suite_spec(const std::string& suite_path, const Block& block, std
 void compute_suite_cells(const SuiteSpec& spec, const IntegratorSettings& settings, std::size_t first,
                          std::size_t count, CellResult* out, int lanes) {
     std::vector<CellModel> cells(count);
-    for (std::size_t i = 0; i < count; ++i) cells[i] = spec.cell(first + i);
+    std::size_t made = spec.records.size();  // the record whose motion `ground` holds
+    Pulse ground;
+    for (std::size_t i = 0; i < count; ++i) {
+        const std::size_t r = spec.coordinates(first + i).record;
+        const SuiteMember& m = spec.records[r];
+        if (m.motion < 0) {
+            cells[i] = spec.cell(first + i);
+            continue;
+        }
+        if (r != made) {
+            ground = to_pulse(spec.motions->motion(static_cast<std::size_t>(m.motion)), spec.block.gravity);
+            made = r;
+        }
+        cells[i] = spec.cell(first + i, &ground);
+    }
     integrate_cells(cells, std::span<CellResult>(out, count), settings, lanes);
 }
 

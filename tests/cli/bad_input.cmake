@@ -145,7 +145,7 @@ add_test(NAME cli.bad_input.config_bom_in_key
                  ${OUT} -- ${RS} sweep --config ${B}/bom_in_key.toml -o ${OUT})
 string(ASCII 1 CTRL)
 bad_config(control_in_key "1: expected '=' after a key, found byte 0x01" "mass${CTRL}x = 1\n")
-bad_config(unknown_table "2: table \\[foo\\] is not one of rocksweep's: \\[sweep\\], \\[merge\\], \\[simulate\\], \\[info\\], \\[design\\], \\[basin\\], \\[suite\\], \\[block\\]"
+bad_config(unknown_table "2: table \\[foo\\] is not one of rocksweep's: \\[sweep\\], \\[merge\\], \\[simulate\\], \\[info\\], \\[design\\], \\[basin\\], \\[suite\\], \\[synth\\], \\[block\\]"
            "mass = 1\n[foo]\n")
 bad_config(misplaced_underscore "1: '3__361' is not a number \\(an underscore must sit between two digits\\)" "mass = 3__361\n")
 bad_config(unclosed_array "2: an array without its closing '\\]'" "mass = 1\nkmin-ratios = [0.5,\n 0.1\n")
@@ -216,7 +216,7 @@ add_test(NAME cli.version_on_stdout COMMAND bash -c "out=$(\"$0\" --version 2>/d
 set(SUITE ${PROJECT_SOURCE_DIR}/configs/records_suite.csv)
 bad_input(suite_measure "--intensity-measure = sa is invalid: not a known word; allowed: one of pga, pgv, pga-ratio, scale"
           suite --config ${CFG} --suite ${SUITE} --intensity-measure sa -o ${OUT})
-bad_input(suite_missing "--suite is required" suite --config ${CFG} -o ${OUT})
+bad_input(suite_missing "--suite = \\(not given\\) is invalid: .*a suite of records \\(CSV\\), or --synthetic-count N" suite --config ${CFG} -o ${OUT})
 bad_input(suite_no_such_file "--suite = /no/such.csv is invalid: no such file" suite --config ${CFG} --suite /no/such.csv -o ${OUT})
 bad_input(suite_refine "--refine = 8 is invalid: 0 for suite" suite --config ${CFG} --suite ${SUITE} --refine 8 -o ${OUT})
 bad_input(suite_spectra_grid "--omega-ratio-points = 5 is invalid: an option of sweep; the suite's ground motions are its records"

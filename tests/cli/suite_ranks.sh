@@ -1,11 +1,14 @@
 #!/usr/bin/env bash
-# suite_ranks.sh ROCKSWEEP CONFIG SUITE WORKDIR
+# suite_ranks.sh ROCKSWEEP CONFIG SUITE WORKDIR [ARGS...]
 # A suite sweep gives bitwise identical result datasets (products included) on 1, 2 and 3
-# ranks and with any chunk size: h5diff of everything but /provenance.
+# ranks and with any chunk size: h5diff of everything but /provenance. SUITE "-": no CSV (ARGS
+# give synthetic motions); ARGS are added to every run.
 set -eu
-rs="$1"; cfg="$2"; suite="$3"; dir="$4"
+rs="$1"; cfg="$2"; suite="$3"; dir="$4"; shift 4
 mkdir -p "$dir"
-args=(suite --config "$cfg" --suite "$suite" --anchorages free constant adaptive --theta-f-ratios 1 --kmin-ratios 0.1
+source_args=(--suite "$suite")
+[ "$suite" = - ] && source_args=()
+args=(suite --config "$cfg" "${source_args[@]}" "$@" --anchorages free constant adaptive --theta-f-ratios 1 --kmin-ratios 0.1
       --intensity-points 4 --radius-range 0.8 2.4 --radius-points 2 --alpha-range 0.15 0.25 --alpha-points 2
       --quiet --overwrite)
 mpi=(mpirun --oversubscribe)

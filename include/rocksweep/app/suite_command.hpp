@@ -9,13 +9,15 @@
 
 #include "rocksweep/app/cli.hpp"
 #include "rocksweep/app/options.hpp"
+#include "rocksweep/app/synth_command.hpp"
 #include "rocksweep/records/suite_sweep.hpp"
 
 namespace rocksweep {
 
 struct SuiteCommand {
     SweepCommand run;  ///< output, resume, chunks, checkpoints (refinement and parts: not here)
-    std::string suite;
+    std::string suite;            ///< CSV of records; may be empty with synthetic motions
+    SyntheticSource synthetic;    ///< --synthetic-count N motions of the model (docs/synthetic.md)
     std::string measure = "pga";
     std::vector<double> intensity_range{0.05, 1.5};
     std::size_t intensity_points = 30;
@@ -34,8 +36,10 @@ void add_suite_hazard_options(CLI::App& sub, SuiteCommand& cmd);
 CLI::App* add_suite_command(CLI::App& app, SuiteCommand& cmd);
 
 /// Refuses, naming it, an option typed on the command line that the suite would ignore (the
-/// pulse and the spectra grid, refinement).
-void check_suite_options(const CLI::App& app, const std::vector<std::string>& args, const SuiteCommand& cmd);
+/// pulse and the spectra grid, refinement, the model's options without --synthetic-count), and
+/// a suite with neither --suite nor --synthetic-count. `suite` is the subcommand.
+void check_suite_options(const CLI::App& app, const CLI::App& suite, const std::vector<std::string>& args,
+                         const SuiteCommand& cmd);
 
 /// The cells of the suite that `opts` (block, scenarios, numerics) and `cmd` describe: reads
 /// the suite and its records. Throws InputError naming the option.

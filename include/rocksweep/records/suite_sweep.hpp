@@ -29,13 +29,28 @@ std::string to_string(IntensityMeasure m);
 const char* intensity_units(IntensityMeasure m);
 const char* intensity_long_name(IntensityMeasure m);
 
+/// Ground motions made where they are integrated (a synthetic model, docs/synthetic.md): the
+/// suite keeps each one's name and measures, and the cells that need motion i make it again
+/// from i, identically on every rank.
+class MotionSource {
+public:
+    virtual ~MotionSource() = default;
+    virtual std::size_t size() const = 0;
+    /// Unique, letters, digits and '_' (a group name of the output's /records).
+    virtual std::string name(std::size_t i) const = 0;
+    virtual Record motion(std::size_t i) const = 0;
+    /// What makes them, on one line (stored in the output).
+    virtual std::string describe() const = 0;
+};
+
 /// One record of the suite as every cell sees it: its samples (standard g, the suite's own
 /// scale applied) and its measures, read once.
 struct SuiteMember {
     SuiteRecord entry;
-    Record record;
+    Record record;  ///< for a made motion, its description without samples (ax_g empty)
     IntensityMeasures measures;
     Pulse pulse;  ///< the record at the block's g and scale 1, whose samples every cell shares (may be unset)
+    std::ptrdiff_t motion = -1;  ///< its index in SuiteSpec::motions; -1: a record read from a file
 };
 
 struct SuiteSpec {
@@ -51,6 +66,7 @@ struct SuiteSpec {
     std::vector<double> alphas_rad;  ///< slenderness angles alpha [rad]
     std::vector<double> radii_m;     ///< block sizes R [m]
     std::vector<Scenario> scenarios;  ///< anchorages of the configured block, scaled with it
+    std::shared_ptr<const MotionSource> motions;  ///< made motions after the file's records (may be null)
 
     std::size_t cells_per_scenario() const { return records.size() * alphas_rad.size() * radii_m.size() * intensity.points; }
     std::size_t cell_count() const { return cells_per_scenario() * scenarios.size(); }
@@ -61,7 +77,9 @@ struct SuiteSpec {
     };
     Coordinates coordinates(std::size_t index) const;
     std::size_t index(const Coordinates& c) const;
-    CellModel cell(std::size_t index) const;
+    /// Cell `index`; `ground` (the cell's own motion at the block's g and scale 1) must be given
+    /// for a made motion, whose samples the spec does not hold.
+    CellModel cell(std::size_t index, const Pulse* ground = nullptr) const;
     /// The factor record `r` is multiplied by at intensity level `level` on blocks of slenderness
     /// alphas_rad[alpha] (only PGA / (g tan alpha) depends on it).
     double scale_factor(std::size_t r, std::size_t alpha, std::size_t level) const;
@@ -69,14 +87,16 @@ struct SuiteSpec {
     Block block_of(double alpha_rad, double radius_m) const;
 };
 
-/// Reads the suite file and every record in it (each record's own checks apply). `scenarios`
-/// are those of the configured block; empty `alphas_rad` or `radii_m` mean the block's own.
-/// Throws InputError naming the option or the suite line.
+/// Reads the suite file and every record in it (each record's own checks apply), then adds the
+/// made `motions` (measured once each; either may be absent: an empty path, a null source).
+/// `scenarios` are those of the configured block; empty `alphas_rad` or `radii_m` mean the
+/// block's own. Throws InputError naming the option or the suite line.
 SuiteSpec make_suite_spec(const std::string& suite_path, const Block& block, std::vector<Scenario> scenarios,
                           IntensityMeasure measure, Axis intensity, std::vector<double> radii_m,
-                          std::vector<double> alphas_rad = {});
+                          std::vector<double> alphas_rad = {}, std::shared_ptr<const MotionSource> motions = nullptr);
 
-/// Computes cells [first, first + count) of `spec` into `out`.
+/// Computes cells [first, first + count) of `spec` into `out`; a made motion is made once for
+/// the consecutive cells that share it.
 void compute_suite_cells(const SuiteSpec& spec, const IntegratorSettings& settings, std::size_t first,
                          std::size_t count, CellResult* out, int lanes = 8);
 

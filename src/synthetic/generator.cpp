@@ -1,0 +1,145 @@
+#include "rocksweep/synthetic/generator.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "rocksweep/core/errors.hpp"
+#include "rocksweep/synthetic/normal_stream.hpp"
+
+namespace rocksweep::synthetic {
+namespace {
+
+// The filter's frequency at the impulse time t [Hz]: omega(tau) / (2 pi) = f_mid + f' (tau - t_mid).
+double filter_frequency_hz(const ModelParameters& p, double t_s, bool drift) {
+    if (!drift) return p.f_mid_hz;
+    return std::max(p.f_mid_hz + p.f_slope_hz_s * (t_s - p.tmid_s), filter_frequency_floor_hz);
+}
+
+}  // namespace
+
+Generator::Generator(const ModelParameters& params, double dt_s, double duration_s, Stages stages)
+    : params_(params), dt_s_(dt_s), stages_(stages), hp_omega_(2.0 * M_PI * params.fc_hz) {
+    check(params);
+    require_closed("dt", dt_s, record_dt_min_s, 0.1, "a sampling interval in [1e-5, 0.1] s");
+    require_closed("duration", duration_s, params.tmid_s, 1e5,
+                   "a motion length in [t_mid, 1e5] s (t_mid = " + format_short(params.tmid_s, 4) + " s)");
+    const Modulation q = modulation(params);
+    const std::size_t n = static_cast<std::size_t>(std::floor(duration_s / dt_s + 0.5)) + 1;
+    const double f_top = std::max(filter_frequency_hz(params, 0.0, stages.drift),
+                                  filter_frequency_hz(params, (n - 1) * dt_s, stages.drift));
+    if (!(f_top * dt_s < 0.25))
+        throw InputError("dt", format_short(dt_s),
+                         "the filter's highest frequency, " + format_short(f_top, 4) +
+                             " Hz, must stay below a quarter of the sampling rate: dt < " + format_short(0.25 / f_top, 4) + " s");
+
+    const double zeta = params.zeta_f, root = std::sqrt(1.0 - zeta * zeta);
+    amplitude_.resize(n);
+    rotation_re_.resize(n);
+    rotation_im_.resize(n);
+    length_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const double omega = 2.0 * M_PI * filter_frequency_hz(params, i * dt_s, stages.drift);
+        // h(t - tau) = omega / sqrt(1 - zeta^2) exp(-zeta omega (t - tau)) sin(omega sqrt(1 - zeta^2) (t - tau))
+        amplitude_[i] = omega / root;
+        const double decay = std::exp(-zeta * omega * dt_s);
+        rotation_re_[i] = decay * std::cos(omega * root * dt_s);
+        rotation_im_[i] = decay * std::sin(omega * root * dt_s);
+        const double reach = std::ceil(impulse_cut / (zeta * omega * dt_s));
+        length_[i] = static_cast<std::uint32_t>(std::min<double>(reach, static_cast<double>(n - 1 - i)));
+    }
+    // sigma_f^2(t_k) = sum over the impulses before t_k of h(t_k - t_i)^2: the noise sum's variance.
+    std::vector<double> variance(n, 0.0);
+    superpose<true>(std::vector<double>(n, 1.0), variance);
+    const std::size_t k_mid = std::min(n - 1, static_cast<std::size_t>(std::floor(params.tmid_s / dt_s + 0.5)));
+    envelope_.assign(n, 0.0);
+    for (std::size_t k = 1; k < n; ++k) {
+        const double sigma = std::sqrt(stages.normalise ? variance[k] : variance[k_mid]);
+        envelope_[k] = q(k * dt_s) / sigma / standard_gravity;
+    }
+}
+
+void Generator::generate(std::uint64_t seed, std::uint64_t index, std::vector<double>& ax_g) const {
+    const std::size_t n = envelope_.size();
+    ax_g.assign(n, 0.0);
+    NormalStream noise(seed, index);
+    std::vector<double> impulses(n);
+    for (double& w : impulses) w = noise.next();
+    superpose<false>(impulses, ax_g);
+    for (std::size_t k = 0; k < n; ++k) ax_g[k] *= envelope_[k];
+    if (!stages_.high_pass) return;
+    // High-pass: the relative acceleration of a critically damped oscillator under the motion,
+    // u'' + 2 w u' + w^2 u = x, by the linear-acceleration method, whose u and u' are exactly the
+    // double and single integrals of the piecewise-linear output: they are the motion's own
+    // displacement and velocity, and decay to rest once x has.
+    const double w = hp_omega_, dt = dt_s_;
+    const double denom = 1.0 + w * dt + w * w * dt * dt / 6.0;
+    double u = 0.0, v = 0.0, a = 0.0;  // x(0) = 0: at rest
+    for (std::size_t k = 1; k < n; ++k) {
+        const double a_new = (ax_g[k] - 2.0 * w * (v + 0.5 * dt * a) - w * w * (u + dt * v + dt * dt / 3.0 * a)) / denom;
+        u += dt * v + dt * dt / 6.0 * (2.0 * a + a_new);
+        v += 0.5 * dt * (a + a_new);
+        a = a_new;
+        ax_g[k] = a;
+    }
+}
+
+namespace {
+
+// z <- z r: the impulse response one sample further (complex, the response its imaginary part).
+inline void advance(double& zr, double& zi, double rr, double ri) {
+    const double nr = zr * rr - zi * ri;
+    zi = zr * ri + zi * rr;
+    zr = nr;
+}
+
+}  // namespace
+
+template <bool Square>
+void Generator::superpose(const std::vector<double>& weights, std::vector<double>& out) const {
+    // Each sample's impulse w_i h(t - t_i) added to the samples after it, h at lag j being
+    // Im(amplitude_i rotation_i^j). Four impulses advance together: their recurrences are
+    // independent, so the processor overlaps them (one alone waits on its multiplications).
+    const auto add = [&out](std::size_t k, double z) { out[k] += Square ? z * z : z; };
+    const std::size_t n = weights.size();
+    std::size_t i = 0;
+    for (; i + 4 <= n; i += 4) {
+        double zr[4], zi[4] = {0, 0, 0, 0}, rr[4], ri[4];
+        std::size_t common = length_[i];
+        for (int l = 0; l < 4; ++l) {
+            zr[l] = amplitude_[i + l] * weights[i + l];
+            rr[l] = rotation_re_[i + l];
+            ri[l] = rotation_im_[i + l];
+            common = std::min<std::size_t>(common, length_[i + l]);
+        }
+        for (std::size_t j = 1; j <= common; ++j)
+            for (int l = 0; l < 4; ++l) {
+                advance(zr[l], zi[l], rr[l], ri[l]);
+                add(i + l + j, zi[l]);
+            }
+        for (int l = 0; l < 4; ++l)
+            for (std::size_t j = common + 1; j <= length_[i + l]; ++j) {
+                advance(zr[l], zi[l], rr[l], ri[l]);
+                add(i + l + j, zi[l]);
+            }
+    }
+    for (; i < n; ++i) {
+        double zr = amplitude_[i] * weights[i], zi = 0.0;
+        for (std::size_t j = 1; j <= length_[i]; ++j) {
+            advance(zr, zi, rotation_re_[i], rotation_im_[i]);
+            add(i + j, zi);
+        }
+    }
+}
+
+Record Generator::record(std::uint64_t seed, std::uint64_t index) const {
+    Record r;
+    r.path = "synthetic:" + std::to_string(seed) + ":" + std::to_string(index);
+    r.units = "g";
+    r.dt_s = dt_s_;
+    generate(seed, index, r.ax_g);
+    r.npts = r.ax_g.size();
+    return r;
+}
+
+}  // namespace rocksweep::synthetic
