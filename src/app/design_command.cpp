@@ -336,6 +336,8 @@ void print_summary(std::ostream& log, const DesignReport& r) {
 
 int run_design(const Options& opts, const DesignCommand& cmd, const std::string& config_text, const MpiSession& mpi) {
     const Problem problem = make_problem(opts, cmd);  // the same on every rank, so is any error
+    // A suite's records are read and checked (and noted as inputs) before the output is claimed.
+    if (!cmd.hazard.suite.empty()) make_suite_spec(opts, cmd.hazard);
     const IntegratorSettings settings = make_settings(opts.numerics);
     RootStream log(mpi);
 

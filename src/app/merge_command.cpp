@@ -92,10 +92,10 @@ int run_merge(const Options& opts, const MergeCommand& cmd, const std::string& c
         // Throws naming the part if its data changed since its run stored their checksum.
         const std::vector<std::string> unverified = verify_results_checksums(cmd.parts[p], spec, part);
         if (!unverified.empty())
-            warnings.push_back("warning: " + cmd.parts[p] + " stores no checksum of its results (" +
-                               (unverified.size() == spec.scenarios.size() ? std::string("any scenario")
+            warnings.push_back("warning: " + cmd.parts[p] + " stores no checksum of the results of " +
+                               (unverified.size() == spec.scenarios.size() ? std::string("its scenarios")
                                                                             : "scenario " + unverified.front()) +
-                               "): written before rocksweep stored one, or killed before it finished; merged unverified\n");
+                               " (written before rocksweep stored one, or killed before it finished): merged unverified\n");
         for (std::size_t i = 0; i < total; ++i) {
             if (!part.done[i]) continue;
             if (!merged.done[i]) {

@@ -63,6 +63,10 @@ cp p1.h5 D.round0.h5; ln D.round0.h5 D.h5
 refused D.round0.h5 "--output = D.h5 $tail the design's round file D.round0.h5," \
   "$rs" design --config "$dcfg" --omega-ratio-points 3 --amplitude-ratio-points 3 --quiet --resume -o D.h5
 
+# design --suite: its records are inputs of the design's own file too, not only of its rounds'.
+refused sylmar.dat "--output = sylmar_link.h5 $tail record sy of the --suite file \(S.csv line 3\) .*sylmar.dat," \
+  "$rs" design --config "$dcfg" --suite S.csv --intensity-points 2 --quiet --overwrite -o sylmar_link.h5
+
 # A file that is no input is still replaced when asked, and merge still merges.
 "$rs" merge --config "$cfg" "${small[@]}" p1.h5 p2.h5 -o merged.h5 || fail "merge to a new file"
 "$rs" sweep --config my.toml "${small[@]}" --overwrite -o merged.h5 || fail "--overwrite of a file that is no input"
