@@ -239,7 +239,8 @@ std::map<std::string, std::string> config_values(const std::string& text) {
 }
 
 /// The options of `config_text` must be those `path` (a round or the design file) was computed
-/// with: the first that differs is named with both values, as the user wrote the option.
+/// with, but for those that only cut up the work: the first that differs is named with both
+/// values, as the user wrote the option.
 void check_same_options(const std::string& path, const std::string& config_text) {
     std::string stored;
     try {
@@ -251,7 +252,10 @@ void check_same_options(const std::string& path, const std::string& config_text)
     std::set<std::string> keys;
     for (const auto& [key, value] : was) keys.insert(key);
     for (const auto& [key, value] : now) keys.insert(key);
+    // How the work is cut up and saved never changes a bit of the results (as for sweep --resume).
+    const std::set<std::string> free_to_change{"chunk", "checkpoint-interval", "lanes"};
     for (const std::string& key : keys) {
+        if (free_to_change.count(key.substr(key.rfind('.') + 1))) continue;
         const auto w = was.find(key), n = now.find(key);
         const std::string before = w == was.end() ? "not given" : w->second, after = n == now.end() ? "(not given)" : n->second;
         if (before != after)  // "design.refine" is --refine in [design]

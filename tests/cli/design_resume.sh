@@ -40,7 +40,8 @@ grep -q -- "--output = .*cut.h5 is invalid: a new design; an unfinished design f
 msg=$("$rs" design --config "$cfg" "${small[@]}" -o "$dir/cut.h5" --resume --strength-ratio 0.5 2>&1); status=$?
 [ "$status" -eq 2 ] || fail "resume with another --strength-ratio: status $status"
 grep -q -- "--strength-ratio = 0.5 is invalid: 0.4, as .*cut.round0.h5 was computed with" <<<"$msg" || fail "message: $msg"
-"$rs" design --config "$cfg" "${small[@]}" -o "$dir/cut.h5" --resume || fail "resume after round 0 failed"
+"$rs" design --config "$cfg" "${small[@]}" -o "$dir/cut.h5" --resume --chunk 7 --lanes 4 --checkpoint-interval 3 ||
+  fail "resume after round 0 (other chunks, lanes and checkpoints: results unchanged) failed"
 h5diff --exclude-path /provenance "$dir/ref.h5" "$dir/cut.h5" || fail "resumed design differs"
 [ ! -e "$dir/cut.round0.h5" ] || fail "round files left by the resumed design"
 
