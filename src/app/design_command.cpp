@@ -57,6 +57,9 @@ void add_design_options(CLI::App& design, DesignCommand& cmd) {
     design.add_option("--near-optimal", cmd.near_optimal,
                       "Report the range of values, around the best, whose safe fraction is within this of the best")
         ->check(number_in(0, 1, ""))->capture_default_str()->group(grp);
+    design.add_flag("--keep-rounds", cmd.keep_rounds,
+                    "Keep each round's spectra, OUT.roundN.h5, once the design file is written (default: removed)")
+        ->group(grp);
     add_suite_hazard_options(design, cmd.hazard);
 }
 
@@ -343,7 +346,7 @@ int run_design(const Options& opts, const DesignCommand& cmd, const std::string&
         log << "rocksweep: error: " << e.what() << "\n";
         return 1;
     }
-    remove_rounds(cmd.run.output, rounds_run);
+    if (!cmd.keep_rounds) remove_rounds(cmd.run.output, rounds_run);
     if (!cmd.run.quiet) {
         print_summary(log, report);
         log << "wrote " << cmd.run.output << "\n";
