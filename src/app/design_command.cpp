@@ -10,21 +10,19 @@
 #include <ctime>
 #include <filesystem>
 #include <iomanip>
-#include <map>
 #include <optional>
-#include <set>
 #include <sstream>
 #include <tuple>
 
 #include "rocksweep/design/design_criterion.hpp"
 #include "rocksweep/io/design_file.hpp"
-#include "rocksweep/io/hdf5.hpp"
 #include "rocksweep/io/suite_file.hpp"
 #include "rocksweep/design/design_search.hpp"
 #include "rocksweep/core/errors.hpp"
 #include "rocksweep/app/design_risk.hpp"
 #include "rocksweep/app/option_checks.hpp"
 #include "rocksweep/app/run_support.hpp"
+#include "rocksweep/app/stored_options.hpp"
 #include "rocksweep/app/sweep_refinement.hpp"
 #include "rocksweep/io/output_claim.hpp"
 #include "rocksweep/io/run_inputs.hpp"
@@ -61,6 +59,9 @@ void add_design_options(CLI::App& design, DesignCommand& cmd) {
     design.add_option("--near-optimal", cmd.near_optimal,
                       "Report the range of values, around the best, whose safe fraction is within this of the best")
         ->check(number_in(0, 1, ""))->capture_default_str()->group(grp);
+    design.add_flag("--keep-rounds", cmd.keep_rounds,
+                    "Keep each round's spectra, OUT.roundN.h5, once the design file is written (default: removed)")
+        ->group(grp);
     add_suite_hazard_options(design, cmd.hazard);
     design.add_option("--hazard", cmd.hazard_curve,
                       "With --suite: a site's hazard curve (docs/risk.md); the design then minimises the annual rate of the "
@@ -245,41 +246,6 @@ DesignCurve curve_of(std::vector<Evaluation> e, bool with_theta_f, double near_o
     return c;
 }
 
-/// "key = value" lines of an effective config (tables and comments skipped), by key.
-std::map<std::string, std::string> config_values(const std::string& text) {
-    std::map<std::string, std::string> values;
-    std::istringstream in(text);
-    for (std::string line; std::getline(in, line);) {
-        const auto eq = line.find(" = ");
-        if (line.empty() || line[0] == '[' || line[0] == '#' || eq == std::string::npos) continue;
-        values[line.substr(0, eq)] = line.substr(eq + 3);
-    }
-    return values;
-}
-
-/// The options of `config_text` must be those `path` (a round or the design file) was computed
-/// with: the first that differs is named with both values, as the user wrote the option.
-void check_same_options(const std::string& path, const std::string& config_text) {
-    std::string stored;
-    try {
-        stored = h5::read_string_attribute(h5::File::open_read_only(path).open_group("provenance"), "config");
-    } catch (const Hdf5Error&) {
-        throw InputError("output", path, "a file of a rocksweep design to resume (it is damaged or not one)");
-    }
-    const auto was = config_values(stored), now = config_values(config_text);
-    std::set<std::string> keys;
-    for (const auto& [key, value] : was) keys.insert(key);
-    for (const auto& [key, value] : now) keys.insert(key);
-    for (const std::string& key : keys) {
-        const auto w = was.find(key), n = now.find(key);
-        const std::string before = w == was.end() ? "not given" : w->second, after = n == now.end() ? "(not given)" : n->second;
-        if (before != after)  // "design.refine" is --refine in [design]
-            throw InputError(key.substr(key.rfind('.') + 1), after,
-                             before + ", as " + path + " was computed with (--resume continues a design only with the "
-                                                       "options it was started with; --overwrite starts afresh)");
-    }
-}
-
 /// Claims the design's output on rank 0 (the rounds claim their own files); an existing
 /// output, or the round files of an unfinished design for it, is refused unless --resume or
 /// --overwrite says what to do with it. Returns true when a resumed design is already complete.
@@ -302,10 +268,10 @@ bool claim_output(std::optional<OutputClaim>& claim, const SweepCommand& run, co
     if (!run.resume) return false;
     // A finished design has removed its rounds: it is complete if its options are these.
     if (claim->exists()) {
-        check_same_options(run.output, config_text);
+        check_same_options(run.output, config_text, "design");
         return true;
     }
-    if (std::filesystem::exists(round0)) check_same_options(round0, config_text);
+    if (std::filesystem::exists(round0)) check_same_options(round0, config_text, "design");
     return false;
 }
 
@@ -412,7 +378,7 @@ int run_design(const Options& opts, const DesignCommand& cmd, const std::string&
         log << "rocksweep: error: " << e.what() << "\n";
         return 1;
     }
-    remove_rounds(cmd.run.output, rounds_run);
+    if (!cmd.keep_rounds) remove_rounds(cmd.run.output, rounds_run);
     if (!cmd.run.quiet) {
         print_summary(log, report);
         log << "wrote " << cmd.run.output << "\n";

@@ -316,7 +316,7 @@ CellModel make_single_cell(const Options& o, Record* record) {
 
 bool defines_run(const std::string& command, const std::string& name, const Options& o) {
     // Kept out, these would also make a replay overwrite, resume or fall silent.
-    static const std::set<std::string> invocation{"output", "resume", "overwrite", "quiet"};
+    static const std::set<std::string> invocation{"output", "resume", "overwrite", "quiet", "keep-rounds"};
     if (invocation.count(name)) return false;
     // A suite's ground motions are its records: the pulse and the spectra grid do not apply.
     static const std::set<std::string> pulse_and_grid{"pulse", "cycles", "phase", "vertical-amplitude", "vertical-phase",

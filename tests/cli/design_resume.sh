@@ -26,6 +26,11 @@ msg=$("$rs" design --config "$cfg" "${small[@]}" -o "$dir/ref.h5" --resume --str
 [ "$status" -eq 2 ] || fail "resume of a finished design with another --strength-ratio: status $status"
 grep -q -- "--strength-ratio = 0.5 is invalid: 0.4, as .*ref.h5 was computed with" <<<"$msg" || fail "message: $msg"
 
+# --keep-rounds keeps them, and they are the rounds' spectra the design was scored on.
+"$rs" design --config "$cfg" "${small[@]}" --keep-rounds -o "$dir/kept.h5" || fail "design --keep-rounds failed"
+h5diff --exclude-path /provenance "$dir/ref.h5" "$dir/kept.h5" || fail "--keep-rounds changed the design"
+for r in 0 1 2; do [ -e "$dir/kept.round$r.h5" ] || fail "kept.round$r.h5 not kept"; done
+
 # Stopped after round 0: a directory in round 1's place makes it fail there, round 0 kept.
 mkdir "$dir/cut.round1.h5"
 "$rs" design --config "$cfg" "${small[@]}" -o "$dir/cut.h5" 2>/dev/null && fail "round 1 in a directory's place ran"
@@ -40,7 +45,8 @@ grep -q -- "--output = .*cut.h5 is invalid: a new design; an unfinished design f
 msg=$("$rs" design --config "$cfg" "${small[@]}" -o "$dir/cut.h5" --resume --strength-ratio 0.5 2>&1); status=$?
 [ "$status" -eq 2 ] || fail "resume with another --strength-ratio: status $status"
 grep -q -- "--strength-ratio = 0.5 is invalid: 0.4, as .*cut.round0.h5 was computed with" <<<"$msg" || fail "message: $msg"
-"$rs" design --config "$cfg" "${small[@]}" -o "$dir/cut.h5" --resume || fail "resume after round 0 failed"
+"$rs" design --config "$cfg" "${small[@]}" -o "$dir/cut.h5" --resume --chunk 7 --lanes 4 --checkpoint-interval 3 ||
+  fail "resume after round 0 (other chunks, lanes and checkpoints: results unchanged) failed"
 h5diff --exclude-path /provenance "$dir/ref.h5" "$dir/cut.h5" || fail "resumed design differs"
 [ ! -e "$dir/cut.round0.h5" ] || fail "round files left by the resumed design"
 

@@ -26,6 +26,7 @@ struct DesignCommand {
     double max_rotation_ratio = 0.0;      ///< acceptable: max |theta| / alpha at most this; 0: no limit
     double object_force_ratio = 0.0;      ///< the object's own force limit / (m g); 0: none (F_u only)
     double near_optimal = 0.005;          ///< values within this of the best criterion are reported as near-optimal
+    bool keep_rounds = false;             ///< keep OUT.roundN.h5 once the design file is written (default: removed)
     /// --suite and its levels: the hazard is the records of a suite instead of the pulse region
     /// (hazard.suite empty: the region). Its run options are not used.
     SuiteCommand hazard;
