@@ -157,6 +157,14 @@ TEST(SuiteRisk, RefusesAHazardOfAnotherMeasure) {
     EXPECT_NO_THROW(check_same_measure(pga, "site.csv", t));
     t.measure = "scale";
     EXPECT_THROW(check_same_measure(pga, "site.csv", t), InputError);
+    // A spectral measure matches at its own period only.
+    const HazardCurve sa(HazardMeasure::sa, 0.5, {0.1, 0.2}, {1e-2, 1e-3});
+    t.measure = "sa_g";
+    t.period_s = 0.5;
+    EXPECT_NO_THROW(check_same_measure(sa, "site.csv", t));
+    t.period_s = 1.0;
+    EXPECT_THROW(check_same_measure(sa, "site.csv", t), InputError);
+    EXPECT_THROW(check_same_measure(pga, "site.csv", t), InputError);
 }
 
 TEST(SuiteRisk, RatesIntervalsAndStatusesOfOneScenario) {

@@ -21,7 +21,8 @@ struct RiskRate {
 /// For a lognormal fragility: Gauss-Legendre quadrature in ln x on pieces no wider than
 /// beta / 4 between the hazard curve's points, from where the integrand has fallen below
 /// 1e-17 of its peak (z = -k_max beta - 9) to z = +9, above which P = 1 to 1e-19 and the rest
-/// is H there. Exact for a power-law hazard to ~1e-12 relative. beta = 0 (a step at the
+/// is H there. Against the power-law closed form: at most 5e-15 relative over k = 1.2-4,
+/// beta = 0.1-1.2, medians inside and beyond the curve (measured). beta = 0 (a step at the
 /// median): lambda = H(median). A median of +inf gives 0; NaN gives NaN.
 RiskRate annual_rate(const HazardCurve& h, const LognormalFragility& f);
 
