@@ -55,28 +55,40 @@ def stiffness(ratio, a):
 
 
 def draw_curve(ax, x, curve, a, colour, unit):
-    """Dots, line, near-optimal band, optimum star and free reference of one curve."""
-    y = curve["safe_fraction"]
-    shown = [y, [a["free_safe_fraction"]]]
+    """Dots, line, near-optimal band, optimum star and free reference of one curve: the safe share,
+    or, for a design at a site's hazard curve (design --hazard), the annual rate it minimised."""
+    risk = "annual_rate" in curve
+    y_key, standing_key, free_key = (("annual_rate", "annual_rate_overturning", "free_annual_rate") if risk
+                                     else ("safe_fraction", "standing_fraction", "free_safe_fraction"))
+    y = curve[y_key]
+    shown = [y, [a[free_key]]]
     coarse = curve["round"] == 0
     ax.plot(x, y, color=colour, lw=1.2, zorder=2)
     ax.plot(x[coarse], y[coarse], "o", mfc="white", mec=colour, ms=6, zorder=3, label="coarse round")
     ax.plot(x[~coarse], y[~coarse], "o", color=colour, ms=4, zorder=3, label="refinement rounds")
     if a.get("max_rotation_ratio", 0) > 0 or a.get("max_force_ratio", 0) > 0:
-        ax.plot(x, curve["standing_fraction"], color=colour, lw=0.7, ls="-.", label="stays up, limits ignored")
-        shown.append(curve["standing_fraction"])
+        ax.plot(x, curve[standing_key], color=colour, lw=0.7, ls="-.",
+                label="overturning alone" if risk else "stays up, limits ignored")
+        shown.append(curve[standing_key])
     lo, hi = curve["attrs"]["near_optimal_range"]
     ax.axvspan(lo, hi, color=colour, alpha=0.12, lw=0,
-               label="within {:g} of the best".format(a.get("near_optimal", 0)))
+               label="within {:g} of the best{}".format(
+                   a.get("near_optimal", 0), " exp(-rate t)" if risk else ""))
     i = int(curve["attrs"]["optimum_index"])
     ax.plot(x[i], y[i], "*", color="#D55E00", ms=16, mec="k", mew=0.6, zorder=4,
-            label="best: {} → {:.3f}".format(unit(x[i]), y[i]))
-    free = a["free_safe_fraction"]
-    ax.axhline(free, color="k", ls="--", lw=1.0, label="free-standing: {:.3f}".format(free))
+            label="best: {} → {}".format(unit(x[i]), "{:.3g}/yr".format(y[i]) if risk else "{:.3f}".format(y[i])))
+    free = a[free_key]
+    ax.axhline(free, color="k", ls="--", lw=1.0,
+               label="free-standing: {}".format("{:.3g}/yr".format(free) if risk else "{:.3f}".format(free)))
     ax.set_xscale("log")
-    ax.set_ylabel("safe fraction of the hazard")
     values = np.concatenate([np.ravel(v) for v in shown])
-    ax.set_ylim(float(values.min()) - 0.05, float(values.max()) + 0.08)
+    if risk:
+        ax.set_yscale("log")
+        ax.set_ylabel("annual rate of the unacceptable state [1/yr]")
+        ax.set_ylim(float(values.min()) / 1.5, float(values.max()) * 2.5)
+    else:
+        ax.set_ylabel("safe fraction of the hazard")
+        ax.set_ylim(float(values.min()) - 0.05, float(values.max()) + 0.08)
 
 
 def plot(D, out):
@@ -119,9 +131,11 @@ def plot(D, out):
     if a.get("object_force_N", 0) > 0:
         limits.append("force on the object ≤ {:.3g} kN".format(a["object_force_N"] / 1e3))
     head = rsplot.block_words(a["half_width_m"], None, a["alpha_rad"], a["p_rad_s"])
-    fig.suptitle("Anchorage design: safe (not overturned{}) share of the {}\n{}; block {}".format(
-        ", " + ", ".join(limits) if limits else "", "runs" if "suite_file" in a else "region", hazard_words(a), head),
-        fontsize=11)
+    what = ("annual rate of the unacceptable state (overturned{}) at the site of {} (minimised)".format(
+        ", " + ", ".join(limits) if limits else "", os.path.basename(a["hazard_curve_file"])) if "hazard_curve_file" in a
+            else "safe (not overturned{}) share of the {}".format(", " + ", ".join(limits) if limits else "",
+                                                                 "runs" if "suite_file" in a else "region"))
+    fig.suptitle("Anchorage design: {}\n{}; block {}".format(what, hazard_words(a), head), fontsize=11)
     return rsplot.save(fig, out)
 
 

@@ -299,7 +299,7 @@ def plot_ida(S, names, j, out):
 
 def fit_label(words, fr, s, j, unit):
     status = fr["fit_status_names"][s, j]
-    med, beta = fr["median"][s, j], fr["beta"][s, j]
+    med, beta = fr["median_intensity"][s, j], fr["beta"][s, j]
     if status == "ok":
         return r"{}: $\hat\theta$ = {:.3g}{}, $\hat\beta$ = {:.2f}".format(words, med, unit, beta)
     if status == "zero_dispersion" and np.isfinite(med):
@@ -325,7 +325,7 @@ def plot_fragility(S, names, j, out):
             ax.errorbar(levels + off, f, yerr=[np.maximum(f - lo, 0), np.maximum(hi - f, 0)], fmt=SCENARIO_MARKERS[k % len(SCENARIO_MARKERS)],
                         color=colour, ms=4, lw=0.8, capsize=2, alpha=0.9)
             status = fr["fit_status_names"][s, j]
-            y = read_suite.fragility_curve(x, fr["median"][s, j], fr["beta"][s, j])
+            y = read_suite.fragility_curve(x, fr["median_intensity"][s, j], fr["beta"][s, j])
             drawn = status in ("ok", "zero_dispersion") and np.isfinite(y).any()
             ls = ("-" if status == "ok" else "--") if drawn else ""
             ax.plot(x if drawn else [], y if drawn else [], color=colour, ls=ls, lw=2,

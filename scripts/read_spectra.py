@@ -29,7 +29,11 @@ Every scenario holds these arrays (docs/hdf5.md says what each means):
     done              uint8    0 pending, 1 computed, 2 inferred by --refine
 
 The file is netCDF-4 readable too: xarray.open_dataset(path, group="spectra/free") gives the
-same arrays with the axes as coordinates.
+same arrays with the axes as coordinates. All scenarios in one xarray.Dataset:
+    ds = read_spectra.to_xarray("spectra.h5")  # dims (scenario, <parameter axes>, amplitude_ratio,
+                                               #   omega_ratio); each scenario's attributes
+                                               #   (anchorage, theta_f_ratio, ...) as coordinates
+    ds.outcome.sel(scenario="free")            #   along scenario (NaN / "" where one lacks it)
 
 As a program:
     read_spectra.py FILE       prints, per scenario, how many cells ended in each outcome.
@@ -99,6 +103,47 @@ def load(path):
             scenarios[name] = sc
         out["scenarios"] = scenarios
     return out
+
+
+# What a variable's attributes keep in to_xarray: the netCDF ones (HDF5's dimension-scale
+# bookkeeping, DIMENSION_LIST and the like, and `dimensions` stay behind).
+VARIABLE_ATTRS = ("units", "long_name", "comment", "flag_values", "flag_masks", "flag_meanings")
+
+
+def _scenario_coordinate(values):
+    """One scenario attribute over all scenarios: float with NaN, or text with '' where a
+    scenario lacks it."""
+    present = [v for v in values if v is not None]
+    if all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in present):
+        return np.array([np.nan if v is None else float(v) for v in values])
+    return np.array(["" if v is None else str(v) for v in values], dtype=object)
+
+
+def to_xarray(path):
+    """Every scenario of a spectra file in one xarray.Dataset: each result array gets a leading
+    dimension `scenario` (the names, in config order) before the file's axes, which are
+    coordinates with their units; the scenarios' own attributes (anchorage, theta_f_ratio,
+    kmin_ratio, ...) are coordinates along `scenario`; the root attributes are the Dataset's."""
+    import xarray as xr
+
+    S = load(path)
+    names = list(S["scenarios"])
+    with h5py.File(path, "r") as f:
+        first = f["spectra"][names[0]]
+        var_attrs = {ds: {k: _value(v) for k, v in first[ds].attrs.items() if k in VARIABLE_ATTRS}
+                     for ds in DATASETS if ds in first}
+    coords = {n: (n, S[n], {k: v for k, v in S["axis_attrs"][n].items() if k in VARIABLE_ATTRS}) for n in S["axes"]}
+    coords["scenario"] = ("scenario", np.array(names, dtype=object), {"long_name": "scenario (anchorage)"})
+    keys = []
+    for sc in S["scenarios"].values():
+        keys += [k for k in sc["attrs"] if k not in keys and k not in coords and np.ndim(sc["attrs"][k]) == 0]
+    for k in keys:
+        coords[k] = ("scenario", _scenario_coordinate([sc["attrs"].get(k) for sc in S["scenarios"].values()]))
+    dims = ("scenario",) + tuple(S["axes"])
+    data = {ds: (dims, np.stack([S["scenarios"][n][ds] for n in names]), var_attrs[ds])
+            for ds in DATASETS if ds in var_attrs}
+    attrs = {k: v for k, v in S["attrs"].items() if np.ndim(v) == 0}
+    return xr.Dataset(data, coords=coords, attrs=attrs)
 
 
 def summary(S):

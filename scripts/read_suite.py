@@ -18,7 +18,7 @@ As a module:
                                       #    "safe_above": [record, alpha, radius]}
     sc["fragility"]                   # None unless complete, else {"states": names,
                                       #   "rotation_ratios", "fraction"[state, alpha, radius, level],
-                                      #   ..., "median", "beta", ... [state, alpha, radius],
+                                      #   ..., "median_intensity", "beta", ... [state, alpha, radius],
                                       #   "fit_status" (codes), "fit_status_names" (str)}
 
     read_suite.to_xarray(path)        # {scenario: xarray.Dataset}, record names as a coordinate
@@ -50,8 +50,8 @@ RESULTS = ("outcome", "max_rotation", "impacts", "impacts_total", "t_overturn", 
 PER_RECORD = ("pga_g", "pga_time_s", "pgv_m_s", "pgv_time_s", "residual_velocity_m_s", "arias_m_s",
               "significant_duration_s", "duration_s", "pga_vertical_g")
 OVERTURNING = ("first_intensity", "first_pga_g", "below_intensity", "safe_above")
-FRAGILITY = ("fraction", "fraction_lo", "fraction_hi", "exceed", "total", "median", "beta", "median_lo",
-             "median_hi", "beta_lo", "beta_hi", "se_ln_median", "se_beta", "fit_status")
+FRAGILITY = ("fraction", "fraction_lo", "fraction_hi", "exceed", "total", "median_intensity", "beta", "median_intensity_lo",
+             "median_intensity_hi", "beta_lo", "beta_hi", "se_ln_median", "se_beta", "fit_status")
 FIT_STATUS = ("ok", "none_reached", "all_reached", "zero_dispersion", "not_identifiable", "decreasing")
 
 
@@ -114,8 +114,19 @@ def _records(f):
     return out
 
 
+# Format 2 named the fitted median `median` (a name xarray's Dataset.median() hides): read
+# under the name of format 3.
+FRAGILITY_BEFORE_3 = {"median_intensity": "median", "median_intensity_lo": "median_lo",
+                      "median_intensity_hi": "median_hi"}
+
+
 def _fragility(g):
     out = _group(g, FRAGILITY)
+    for new, old in FRAGILITY_BEFORE_3.items():
+        if new not in g and old in g:
+            out[new] = g[old][()]
+            if "units" in g[old].attrs:
+                out["units"][new] = value(g[old].attrs["units"])
     if "alpha_rad" not in g:
         _one_alpha(out, FRAGILITY)
     out["states"] = flag_meanings(g["damage_state"])
@@ -254,10 +265,20 @@ def _unit(units, name):
 # --------------------------------------------------------------------------- summary
 
 
+# The intensity's unit as a reader writes it: the file keeps CF units, "1" for PGA / g.
+UNIT_WORDS = {"pga_g": "g", "pga_ratio": "g tan(alpha)", "scale": "x record"}
+
+
+def intensity_unit_words(S):
+    """The intensity's unit for text and axis labels: 'g' for PGA (stored as PGA / g, CF units
+    '1'), 'g tan(alpha)' for pga_ratio, 'x record' for a plain scale, else the file's units."""
+    return UNIT_WORDS.get(S["intensity_measure"], S["intensity_units"])
+
+
 def summary(S):
     a = S["attrs"]
     rec = S["records"]
-    iu = S["intensity_units"]
+    iu = intensity_unit_words(S)
     lines = [
         "runs: {} done of {}{}".format(a.get("n_done"), a.get("n_cells"), "" if a.get("complete") == 1 else " (partial)"),
         "grid: {} records x {} alphas x {} radii x {} levels of {} [{}] {:g} ... {:g}".format(
@@ -280,7 +301,7 @@ def summary(S):
         for a, alpha in enumerate(S["alpha_rad"]):
             for j, r in enumerate(S["radius_m"]):
                 lines.append("  alpha = {:g} rad, R = {:g} m, {}: median {:.4g} [{}], beta {:.3g} ({})".format(
-                    alpha, r, fr["states"][s], fr["median"][s, a, j], iu, fr["beta"][s, a, j],
+                    alpha, r, fr["states"][s], fr["median_intensity"][s, a, j], iu, fr["beta"][s, a, j],
                     fr["fit_status_names"][s, a, j]))
     return "\n".join(lines)
 

@@ -7,6 +7,7 @@
 #   results/pulse_<family>.png|pdf     their overturning spectra, the PNGs also in docs/figures/
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build_targets=(rocksweep)  # only what this script runs: the tests are test.sh's
 source "$here/scripts/setup.sh"
 mkdir -p "$here/docs/figures"
 for family in one_sine one_sine_phase one_sine_sizes n_sine cycloidal_b cycloidal_c ricker rectangle; do

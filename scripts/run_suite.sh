@@ -10,6 +10,7 @@
 # Extra arguments go to rocksweep suite.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build_targets=(rocksweep)  # only what this script runs: the tests are test.sh's
 source "$here/scripts/setup.sh"
 mkdir -p "$here/docs/figures"
 cd "$here"  # the config names its suite relative to the repository root

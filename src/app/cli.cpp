@@ -15,6 +15,7 @@
 #include "rocksweep/app/config_file.hpp"
 #include "rocksweep/app/design_command.hpp"
 #include "rocksweep/app/info_command.hpp"
+#include "rocksweep/app/risk_command.hpp"
 #include "rocksweep/app/suite_command.hpp"
 #include "rocksweep/core/errors.hpp"
 #include "rocksweep/grid/parameter_axis.hpp"
@@ -51,11 +52,11 @@ void add_model_options(CLI::App& app, Options& o) {
     // Sizes from a 1 mm specimen to a 1 km tower; masses from 1 g to a 1 Mt monolith.
     app.add_option("--half-width", b.half_width_m, "Half-width b of the rectangular block [m]")
         ->check(number_in(1e-3, 1e3, m))->capture_default_str()->group(blk);
-    app.add_option("--half-height", b.half_height_m, "Half-height h [m]")->check(number_in(1e-3, 1e3, m))->capture_default_str()->group(blk);
+    app.add_option("--half-height", b.half_height_m, "Half-height h [m], at most 1e4 b")->check(number_in(1e-3, 1e3, m))->capture_default_str()->group(blk);
     app.add_option("--mass", b.mass_kg, "Mass m [kg]")->check(number_in(1e-3, 1e9, kg))->capture_default_str()->group(blk);
     app.add_option("--radius", b.radius_m, "Equivalent block: R, corner to centre of mass [m] (with --alpha)")
         ->check(number_in(1e-3, 1e3, m))->group(blk);
-    app.add_option("--alpha", b.alpha_rad, "Equivalent block: slenderness angle [rad] (with --radius)")
+    app.add_option("--alpha", b.alpha_rad, "Equivalent block: slenderness angle [rad] (with --radius), at least atan(1e-4) (h/b <= 1e4)")
         ->check(number_in(min_alpha_rad, M_PI / 2, rad, false, true))->group(blk);
     app.add_option("--inertia-ratio", b.inertia_ratio, "Equivalent block: I0/(m R^2) (default 4/3)")
         ->check(number_in(1.0, max_inertia_ratio, none))->group(blk);
@@ -142,6 +143,9 @@ void add_model_options(CLI::App& app, Options& o) {
                    "samples (every record sample ends a step) | cross (steps of the knob's length cross samples on "
                    "moment nodes: 1.3-1.6x faster, ~8x the theta error, docs/physics_kernel.md)")
         ->check(one_of({"samples", "cross"}))->capture_default_str()->group(num);
+    app.add_flag("--record-any-pga", n.record_any_pga,
+                 "Accept a record whose PGA as read lies outside 0.005-5 g (otherwise taken for a wrong unit, docs/records.md)")
+        ->group(num);
     app.add_flag("--no-energy-stop", n.no_energy_stop, "Integrate every cell to rest instead of deciding by energy")->group(num);
     app.add_option("--lanes", n.lanes, "Cells advanced together in one batch")
         ->check(integer_of({1, 4, 8, 16}))->capture_default_str()->group(num);
@@ -329,12 +333,14 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
     CLI::App* basin = add_basin_command(app, basin_cmd);
     SuiteCommand suite_cmd;
     CLI::App* suite = add_suite_command(app, suite_cmd);
+    RiskCommand risk_cmd;
+    CLI::App* risk = add_risk_command(app, risk_cmd);
     SynthCommand synth_cmd;
     CLI::App* synth = add_synth_command(app, synth_cmd);
     for (CLI::App* sub : {sweep, merge, sim, info, design, basin, suite, synth})
         sub->footer("Block, pulse, anchorage, grid and numerics options (and --config): rocksweep --help");
 
-    const std::vector<std::string> subcommands{"sweep", "merge", "simulate", "info", "design", "basin", "suite", "synth"};
+    const std::vector<std::string> subcommands{"sweep", "merge", "simulate", "info", "design", "basin", "suite", "risk", "synth"};
     app.config_formatter(std::make_shared<TomlConfig>(subcommands, std::vector<std::string>{"block", "pulse", "anchorage", "grid", "numerics"},
                                                       [config] { return config->as<std::string>(); }));
     const std::vector<std::string> args(argv + (argc > 0 ? 1 : 0), argv + argc);
@@ -345,7 +351,9 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
         if (*design) check_design_options(app, args, design_cmd);
         if (*basin) check_basin_options(app, args);
         if (*suite) check_suite_options(app, *suite, args, suite_cmd);
+        if (*risk) check_risk_options(app, args);
         if (*synth) check_synthetic_options(*synth, synth_cmd.source);
+        note_file_inputs(app);
     } catch (const CLI::Success& e) {  // --help, --help-all, --version: to stdout, once
         if (mpi.is_root()) app.exit(e);
         return 0;
@@ -359,7 +367,9 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
     if (*sim) use_history_defaults(app, opts.numerics);
     const std::string command = app.get_subcommands().at(0)->get_name();
     const std::string config_text =
-        effective_config(app, command, [&](const std::string& name) { return defines_run(command, name, opts); });
+        effective_config(app, command, [&](const std::string& name) {
+            return command == "risk" ? risk_defines_run(name) : defines_run(command, name, opts);
+        });
     try {
         if (*info) {
             if (mpi.is_root()) print_info(opts, std::cout);
@@ -376,6 +386,7 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
         }
         if (*basin) return mpi.is_root() ? run_basin(opts, basin_cmd, config_text) : 0;
         if (*suite) return run_suite(opts, suite_cmd, config_text, mpi);
+        if (*risk) return mpi.is_root() ? run_risk(risk_cmd, config_text) : 0;
         if (*synth) return mpi.is_root() ? run_synth(synth_cmd) : 0;
         return run_sweep(opts, sweep_cmd, config_text, mpi);
     } catch (const InputError& e) {

@@ -1,6 +1,7 @@
 #include "rocksweep/app/config_file.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <iterator>
@@ -205,10 +206,15 @@ private:
         return {number(word)};
     }
 
-    /// TOML numbers to what std::stod reads: underscores only between digits, then removed.
+    /// TOML numbers to what std::stod reads: underscores only between digits, then removed;
+    /// 0x, 0o and 0b integers written in decimal.
     std::string number(const std::string& w) {
         const std::string body = (w[0] == '+' || w[0] == '-') ? w.substr(1) : w;
         if (body == "inf" || body == "nan") return (w[0] == '-' ? "-" : "") + body;
+        if (body.size() > 1 && body[0] == '0' && (body[1] == 'x' || body[1] == 'o' || body[1] == 'b')) {
+            if (body.size() != w.size()) fail("'" + shorten(w) + "' is not a number (TOML's 0x, 0o and 0b integers take no sign)");
+            return based_integer(w);
+        }
         std::string out;
         bool any_digit = false;
         for (std::size_t k = 0; k < w.size(); ++k) {
@@ -229,6 +235,27 @@ private:
         if (!any_digit || end != out.c_str() + out.size())
             fail("'" + shorten(w) + "' is not a value (a string needs quotes; dates are not used by rocksweep)");
         return out;
+    }
+
+    /// A TOML integer in base 16 (0x), 8 (0o) or 2 (0b), as its decimal digits; at most 2^63 - 1.
+    std::string based_integer(const std::string& w) {
+        const int base = w[1] == 'x' ? 16 : w[1] == 'o' ? 8 : 2;
+        const char* name = base == 16 ? "a hexadecimal" : base == 8 ? "an octal" : "a binary";
+        const auto digit = [base](char c) {
+            const int d = is_digit(c) ? c - '0' : (c >= 'a' && c <= 'f') ? c - 'a' + 10 : (c >= 'A' && c <= 'F') ? c - 'A' + 10 : 99;
+            return d < base ? d : -1;
+        };
+        unsigned long long x = 0;
+        for (std::size_t k = 2; k < w.size(); ++k) {
+            if (w[k] == '_' && k > 2 && k + 1 < w.size() && digit(w[k - 1]) >= 0 && digit(w[k + 1]) >= 0) continue;
+            const int d = digit(w[k]);
+            if (d < 0) fail("'" + shorten(w) + "' is not " + name + " integer (digits, '_' only between two)");
+            if (x > (static_cast<unsigned long long>(INT64_MAX) - d) / base)
+                fail("'" + shorten(w) + "' is larger than TOML's largest integer, 2^63 - 1");
+            x = x * base + d;
+        }
+        if (w.size() == 2) fail("'" + w + "' is not " + std::string(name) + " integer (no digits)");
+        return std::to_string(x);
     }
 
     std::string string_value() {

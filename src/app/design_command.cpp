@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <ctime>
+#include <filesystem>
 #include <iomanip>
 #include <optional>
 #include <sstream>
@@ -18,10 +19,13 @@
 #include "rocksweep/io/suite_file.hpp"
 #include "rocksweep/design/design_search.hpp"
 #include "rocksweep/core/errors.hpp"
+#include "rocksweep/app/design_risk.hpp"
 #include "rocksweep/app/option_checks.hpp"
 #include "rocksweep/app/run_support.hpp"
+#include "rocksweep/app/stored_options.hpp"
 #include "rocksweep/app/sweep_refinement.hpp"
 #include "rocksweep/io/output_claim.hpp"
+#include "rocksweep/io/run_inputs.hpp"
 
 #ifndef ROCKSWEEP_VERSION
 #define ROCKSWEEP_VERSION "unknown"
@@ -55,14 +59,25 @@ void add_design_options(CLI::App& design, DesignCommand& cmd) {
     design.add_option("--near-optimal", cmd.near_optimal,
                       "Report the range of values, around the best, whose safe fraction is within this of the best")
         ->check(number_in(0, 1, ""))->capture_default_str()->group(grp);
+    design.add_flag("--keep-rounds", cmd.keep_rounds,
+                    "Keep each round's spectra, OUT.roundN.h5, once the design file is written (default: removed)")
+        ->group(grp);
     add_suite_hazard_options(design, cmd.hazard);
+    design.add_option("--hazard", cmd.hazard_curve,
+                      "With --suite: a site's hazard curve (docs/risk.md); the design then minimises the annual rate of the "
+                      "unacceptable state (overturning, or beyond the limits) there")
+        ->check(existing_file("a hazard curve file"))->group(grp);
+    design.add_option("--hazard-site", cmd.hazard_site, "Row of an OpenQuake hazard file with several sites (0-based)")
+        ->check(integer_in(0, 10000000))->group(grp);
+    design.add_option("--exposure-years", cmd.exposure_years, "With --hazard: the exposure time t of exp(-rate t) [yr]")
+        ->check(number_in(1e-3, 1e5, "yr"))->capture_default_str()->group(grp);
 }
 
 void check_design_options(const CLI::App& app, const std::vector<std::string>& args, const DesignCommand& cmd) {
     refuse_typed(app, args, {"--anchorages", "--theta-f-ratios", "--kmin-ratios", "--scenario"},
                  "an option of sweep and info only; design chooses its scenarios (--stiffness-range, --kmin-ratio-range)");
     if (cmd.hazard.suite.empty()) {
-        refuse_typed(app, args, {"--intensity-measure", "--intensity-range", "--intensity-points"},
+        refuse_typed(app, args, {"--intensity-measure", "--intensity-range", "--intensity-points", "--hazard", "--hazard-site"},
                      "an option of design --suite (the hazard is the pulse region without it)");
         return;
     }
@@ -82,6 +97,7 @@ struct Problem {
     double k_max = 0.0;
     SearchSettings stiffness, kmin;
     DesignConstraints limits;
+    std::optional<DesignRisk> risk;  ///< --hazard: the criterion is the annual rate at that site
 };
 
 std::pair<double, double> range_of(const char* option, const std::vector<double>& v) {
@@ -115,6 +131,8 @@ Problem make_problem(const Options& opts, const DesignCommand& cmd) {
     p.kmin = search_settings(cmd, range_of("kmin-ratio-range", cmd.kmin_range));
     p.limits.max_rotation_ratio = cmd.max_rotation_ratio;
     p.limits.max_force_ratio = cmd.object_force_ratio / opts.anchorage.strength_ratio;
+    if (!cmd.hazard_curve.empty())
+        p.risk = read_design_hazard(cmd.hazard_curve, cmd.hazard_site, cmd.exposure_years, make_suite_spec(opts, cmd.hazard));
     const bool limited = cmd.max_rotation_ratio > 0.0 || cmd.object_force_ratio > 0.0;
     if (limited && cmd.run.refine_stride != 0)
         throw InputError("refine", std::to_string(cmd.run.refine_stride),
@@ -160,23 +178,23 @@ struct Evaluation {
     double x = 0.0;         ///< the search's axis
     double variable = 0.0;  ///< K [N/m] of the scenario, or K_min / K_max
     double theta_f_ratio = 0.0;
-    RegionScore score;
+    DesignScore scored;
     int round = 0;
 };
 
 /// Rank 0's record of the search.
 struct Ledger {
-    std::optional<RegionScore> free;
+    std::optional<DesignScore> free;
     std::vector<Evaluation> constant, adaptive;
 
     static std::vector<SearchPoint> points(const std::vector<Evaluation>& e) {
         std::vector<SearchPoint> p;
-        for (const Evaluation& x : e) p.push_back({x.x, x.score.acceptable});
+        for (const Evaluation& x : e) p.push_back({x.x, x.scored.score.acceptable});
         return p;
     }
 
     /// Takes the round's scores, one per scenario in round_options' order.
-    void add_round(const RoundValues& v, const std::vector<Scenario>& scenarios, const std::vector<RegionScore>& scores, int round) {
+    void add_round(const RoundValues& v, const std::vector<Scenario>& scenarios, const std::vector<DesignScore>& scores, int round) {
         std::size_t s = 0;
         if (round == 0) free = scores[s++];
         for (double x : v.log_k) {
@@ -189,18 +207,22 @@ struct Ledger {
 
 /// The round's file read back and scored, a score per scenario: area shares of the region, or
 /// shares of the suite's runs.
-std::vector<RegionScore> round_scores(const Options& round_opts, const DesignCommand& cmd, const std::string& path,
-                                      const IntegratorSettings& settings, const DesignConstraints& limits) {
-    std::vector<RegionScore> scores;
+std::vector<DesignScore> round_scores(const Options& round_opts, const DesignCommand& cmd, const std::string& path,
+                                      const IntegratorSettings& settings, const Problem& p) {
+    std::vector<DesignScore> scores;
+    const double none = std::nan("");
     if (cmd.hazard.suite.empty()) {
         const SweepSpec spec = sweep_spec(round_opts, cmd.run);  // the round's refinement, as its file records it
         const SweepResults r = read_spectra_results(path, spec, settings);
-        for (std::size_t s = 0; s < spec.scenarios.size(); ++s) scores.push_back(score_scenario(spec, r, s, limits));
+        for (std::size_t s = 0; s < spec.scenarios.size(); ++s) scores.push_back({score_scenario(spec, r, s, p.limits), none, none});
     } else {
         const SuiteSpec spec = make_suite_spec(round_opts, cmd.hazard);
         const SweepResults r = read_suite_results(path, spec, settings);
         const std::size_t per = spec.cells_per_scenario();
-        for (std::size_t s = 0; s < spec.scenarios.size(); ++s) scores.push_back(score_cells(r, s * per, per, limits));
+        for (std::size_t s = 0; s < spec.scenarios.size(); ++s)
+            scores.push_back(p.risk ? risk_score(*p.risk, spec.intensity.values(),
+                                                 score_levels(r, s * per, spec.records.size(), spec.intensity.points, p.limits))
+                                    : DesignScore{score_cells(r, s * per, per, p.limits), none, none});
     }
     return scores;
 }
@@ -212,10 +234,12 @@ DesignCurve curve_of(std::vector<Evaluation> e, bool with_theta_f, double near_o
     for (const Evaluation& x : e) {
         c.variable.push_back(x.variable);
         if (with_theta_f) c.theta_f_ratio.push_back(x.theta_f_ratio);
-        c.acceptable.push_back(x.score.acceptable);
-        c.standing.push_back(x.score.standing);
+        c.acceptable.push_back(x.scored.score.acceptable);
+        c.standing.push_back(x.scored.score.standing);
+        c.rate.push_back(x.scored.rate);
+        c.standing_rate.push_back(x.scored.standing_rate);
         c.round.push_back(x.round);
-        pts.push_back({x.x, x.score.acceptable});
+        pts.push_back({x.x, x.scored.score.acceptable});
     }
     c.optimum = best_point(pts);
     std::tie(c.near_lo, c.near_hi) = near_best(pts, c.optimum, near_optimal);
@@ -223,12 +247,40 @@ DesignCurve curve_of(std::vector<Evaluation> e, bool with_theta_f, double near_o
 }
 
 /// Claims the design's output on rank 0 (the rounds claim their own files); an existing
-/// output is refused unless --resume or --overwrite says what to do with it.
-void claim_output(std::optional<OutputClaim>& claim, const SweepCommand& run) {
+/// output, or the round files of an unfinished design for it, is refused unless --resume or
+/// --overwrite says what to do with it. Returns true when a resumed design is already complete.
+bool claim_output(std::optional<OutputClaim>& claim, const SweepCommand& run, const std::string& config_text) {
     if (run.resume && run.overwrite) throw InputError("resume", "with --overwrite", "one of --resume, --overwrite");
+    // A resumed design reads its rounds back: none may be replaced by the design's file.
+    std::error_code ec;
+    for (int round = 0; std::filesystem::exists(round_path(run.output, round), ec); ++round)
+        refuse_same_file("output", run.output, "the design's round file", round_path(run.output, round));
     claim.emplace("output", run.output);
-    if (claim->exists() && !run.resume && !run.overwrite)
-        throw InputError("output", run.output, "a new file; it exists: pass --resume to continue its design or --overwrite to replace it");
+    const std::string round0 = round_path(run.output, 0);
+    if (!run.resume && !run.overwrite) {
+        if (claim->exists())
+            throw InputError("output", run.output, "a new file; it exists: pass --resume to continue its design or --overwrite to replace it");
+        if (std::filesystem::exists(round0))
+            throw InputError("output", run.output,
+                             "a new design; an unfinished design for it left " + round0 +
+                                 ": pass --resume to continue it or --overwrite to start afresh");
+    }
+    if (!run.resume) return false;
+    // A finished design has removed its rounds: it is complete if its options are these.
+    if (claim->exists()) {
+        check_same_options(run.output, config_text, "design");
+        return true;
+    }
+    if (std::filesystem::exists(round0)) check_same_options(round0, config_text, "design");
+    return false;
+}
+
+/// Removes the round files once the design file holds their results; none is resumable any more.
+/// Also those of an earlier, longer design overwritten by this one.
+void remove_rounds(const std::string& output, int rounds) {
+    std::error_code ec;
+    for (int r = 0; std::filesystem::remove(round_path(output, r), ec) || r < rounds; ++r) {
+    }
 }
 
 void print_summary(std::ostream& log, const DesignReport& r) {
@@ -240,25 +292,35 @@ void print_summary(std::ostream& log, const DesignReport& r) {
         << "  adaptive:      best K_min/K_max = " << a.variable[a.optimum] << " (K_max = " << r.k_max_n_per_m
         << " N/m), safe fraction " << a.acceptable[a.optimum] << " (" << a.variable.size() << " values; within "
         << r.near_optimal << " of it from " << a.variable[a.near_lo] << " to " << a.variable[a.near_hi] << ")\n";
+    if (r.risk)
+        log << "  at the site of " << r.risk->path << ", the annual rate of the unacceptable state: free " << r.free_rate
+            << ", best constant " << c.rate[c.optimum] << ", best adaptive " << a.rate[a.optimum] << " [1/yr]; the safe fraction "
+            << "above is exp(-rate t), the probability of none in " << r.risk->exposure_years << " years\n";
 }
 
 }  // namespace
 
 int run_design(const Options& opts, const DesignCommand& cmd, const std::string& config_text, const MpiSession& mpi) {
     const Problem problem = make_problem(opts, cmd);  // the same on every rank, so is any error
+    // A suite's records are read and checked (and noted as inputs) before the output is claimed.
+    if (!cmd.hazard.suite.empty()) make_suite_spec(opts, cmd.hazard);
     const IntegratorSettings settings = make_settings(opts.numerics);
     RootStream log(mpi);
 
     std::optional<OutputClaim> claim;
     const OutputVerdict verdict = agree_on_output(
-        mpi, log, [&] { claim_output(claim, cmd.run); return false; }, [&] { claim.reset(); });
+        mpi, log, [&] { return claim_output(claim, cmd.run, config_text); }, [&] { claim.reset(); });
+    if (verdict == OutputVerdict::nothing_to_do && !cmd.run.quiet)
+        log << cmd.run.output << ": design already complete; nothing to do\n";
     if (verdict != OutputVerdict::go) return exit_status(verdict);
 
     const double t0 = MpiSession::wall_time();
     const BracketSearch by_k(problem.stiffness), by_rho(problem.kmin);
     RoundValues values{by_k.first_round(), by_rho.first_round()};
     Ledger ledger;
+    int rounds_run = 0;
     for (int round = 0; !values.empty(); ++round) {
+        rounds_run = round + 1;
         const Options round_opts = round_options(opts, problem, values, round == 0);
         SweepCommand run = cmd.run;
         run.output = round_path(cmd.run.output, round);
@@ -275,7 +337,7 @@ int run_design(const Options& opts, const DesignCommand& cmd, const std::string&
         }
         if (mpi.is_root()) {
             ledger.add_round(values, make_sweep_spec(round_opts).scenarios,
-                             round_scores(round_opts, cmd, run.output, settings, problem.limits), round);
+                             round_scores(round_opts, cmd, run.output, settings, problem), round);
             values.log_k = by_k.next_round(round + 1, Ledger::points(ledger.constant));
             values.log_rho = by_rho.next_round(round + 1, Ledger::points(ledger.adaptive));
         }
@@ -291,7 +353,10 @@ int run_design(const Options& opts, const DesignCommand& cmd, const std::string&
     report.object_force_n = cmd.object_force_ratio * problem.hazard.block.mass_kg * problem.hazard.block.gravity;
     report.k_max_n_per_m = problem.k_max;
     report.k_max_theta_f_ratio = opts.grid.adaptive_theta_f_ratio;
-    report.free = *ledger.free;
+    report.free = ledger.free->score;
+    report.free_rate = ledger.free->rate;
+    report.free_standing_rate = ledger.free->standing_rate;
+    if (problem.risk) report.risk = RiskHazard{problem.risk->path, hazard_measure_name(problem.risk->curve.measure(), problem.risk->curve.period_s()), problem.risk->exposure_years};
     report.constant = curve_of(ledger.constant, true, cmd.near_optimal);
     report.adaptive = curve_of(ledger.adaptive, false, cmd.near_optimal);
     report.near_optimal = cmd.near_optimal;
@@ -313,6 +378,7 @@ int run_design(const Options& opts, const DesignCommand& cmd, const std::string&
         log << "rocksweep: error: " << e.what() << "\n";
         return 1;
     }
+    if (!cmd.keep_rounds) remove_rounds(cmd.run.output, rounds_run);
     if (!cmd.run.quiet) {
         print_summary(log, report);
         log << "wrote " << cmd.run.output << "\n";

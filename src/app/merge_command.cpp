@@ -1,7 +1,6 @@
 // `rocksweep merge`: join the part files of a sweep split over a job array into one file,
 // refusing files that are not parts of the same sweep.
 #include <cstring>
-#include <filesystem>
 #include <iostream>
 #include <optional>
 
@@ -58,9 +57,16 @@ std::string describe_cell(const SweepSpec& spec, std::size_t i) {
            format_short(spec.omega_ratio.at(k % n_omega));
 }
 
-bool same_file(const std::string& a, const std::string& b) {
-    std::error_code ec;
-    return std::filesystem::equivalent(a, b, ec);
+/// read_spectra_results, its refusals of the file itself told as refusals of this part.
+SweepResults read_part(const std::string& part, const SweepSpec& spec, const IntegratorSettings& settings) {
+    try {
+        return read_spectra_results(part, spec, settings);
+    } catch (const InputError& e) {
+        if (e.value() != part) throw;
+        std::string allowed = e.allowed();
+        if (const auto at = allowed.find("a rocksweep spectra file"); at == 0) allowed.replace(0, 24, "a rocksweep part file");
+        throw InputError("part file", part, allowed);
+    }
 }
 
 }  // namespace
@@ -70,9 +76,7 @@ int run_merge(const Options& opts, const MergeCommand& cmd, const std::string& c
     const SweepSpec spec =
         cmd.parts.empty() ? make_sweep_spec(opts) : with_recorded_refinement(cmd.parts[0], make_sweep_spec(opts));
     const IntegratorSettings settings = make_settings(opts.numerics);
-    for (const std::string& part : cmd.parts)
-        if (same_file(part, cmd.output))
-            throw InputError("output", cmd.output, "a file that is not one of the parts being merged");
+    // A part as the output is refused by the claim: the parts are the run's inputs (run_inputs.hpp).
     OutputClaim claim("output", cmd.output);
     if (claim.exists() && !cmd.overwrite)
         throw InputError("output", cmd.output, "a new file; it exists: pass --overwrite to replace it");
@@ -81,9 +85,17 @@ int run_merge(const Options& opts, const MergeCommand& cmd, const std::string& c
     SweepResults merged;
     merged.resize(total);
     std::vector<std::uint32_t> from(total, 0);  // 1 + the part a cell came from
+    std::vector<std::string> warnings;           // printed once nothing can refuse the merge any more
     for (std::size_t p = 0; p < cmd.parts.size(); ++p) {
         // Throws naming the file when its grid, scenarios, block, pulse or settings differ.
-        SweepResults part = read_spectra_results(cmd.parts[p], spec, settings);
+        SweepResults part = read_part(cmd.parts[p], spec, settings);
+        // Throws naming the part if its data changed since its run stored their checksum.
+        const std::vector<std::string> unverified = verify_results_checksums(cmd.parts[p], spec, part);
+        if (!unverified.empty())
+            warnings.push_back("warning: " + cmd.parts[p] + " stores no checksum of the results of " +
+                               (unverified.size() == spec.scenarios.size() ? std::string("its scenarios")
+                                                                            : "scenario " + unverified.front()) +
+                               " (written before rocksweep stored one, or killed before it finished): merged unverified\n");
         for (std::size_t i = 0; i < total; ++i) {
             if (!part.done[i]) continue;
             if (!merged.done[i]) {
@@ -101,6 +113,7 @@ int run_merge(const Options& opts, const MergeCommand& cmd, const std::string& c
     prov.config_text = config_text;
     prov.ranks = 1;
     write_spectra(cmd.output, spec, merged, prov, settings);
+    for (const std::string& w : warnings) std::cerr << w;  // even with --quiet: the data were not verified
     const std::size_t done = merged.done_count();
     if (!cmd.quiet) {
         std::cerr << "merged " << cmd.parts.size() << " file(s): " << done << " of " << total << " cells -> "

@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "rocksweep/core/errors.hpp"
+#include "rocksweep/io/run_inputs.hpp"
 
 namespace rocksweep {
 
@@ -122,6 +123,24 @@ CLI::Validator existing_file(const std::string& what) {
             return {};
         },
         "FILE", "existing_file");
+}
+
+void note_file_inputs(CLI::App& app) {
+    forget_inputs();
+    std::vector<CLI::App*> apps{&app};
+    for (CLI::App* sub : app.get_subcommands()) apps.push_back(sub);
+    for (CLI::App* a : apps)
+        for (CLI::Option* opt : a->get_options()) {
+            bool names_file = false;
+            try {
+                names_file = opt->get_validator("existing_file") != nullptr;
+            } catch (const CLI::OptionNotFound&) {
+            }
+            if (!names_file) continue;
+            const std::string what = opt->get_lnames().empty() ? "one of the " + opt->get_name() + " given"
+                                                               : "the --" + opt->get_lnames().front() + " file";
+            for (const std::string& path : opt->results()) note_input(what, path);
+        }
 }
 
 void refuse_typed(const CLI::App& app, const std::vector<std::string>& args, const std::vector<std::string>& options,

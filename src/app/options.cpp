@@ -265,13 +265,17 @@ RecordSource record_source(const SingleOptions& s) {
     return r;
 }
 
-CellModel make_single_cell(const Options& o) {
+CellModel make_single_cell(const Options& o, Record* record) {
     const Block b = make_block(o.block);
     const SingleOptions& s = o.single;
     Pulse pulse;
     pulse.ax_g = s.amplitude_ratio * b.alpha_rad;
     if (!s.record.empty()) {
-        pulse = to_pulse(read_record(record_source(s)), b.gravity);
+        const Record r = read_record(record_source(s));
+        if (!o.numerics.record_any_pga && !plausible_pga(r))
+            throw InputError("record", s.record, implausible_pga(r, "pass --record-any-pga to accept it"));
+        pulse = to_pulse(r, b.gravity);
+        if (record) *record = r;
     } else if (s.pulse == "sine") {
         pulse.kind = PulseKind::sine;
         pulse.omega = s.omega_ratio * b.p();
@@ -312,7 +316,7 @@ CellModel make_single_cell(const Options& o) {
 
 bool defines_run(const std::string& command, const std::string& name, const Options& o) {
     // Kept out, these would also make a replay overwrite, resume or fall silent.
-    static const std::set<std::string> invocation{"output", "resume", "overwrite", "quiet"};
+    static const std::set<std::string> invocation{"output", "resume", "overwrite", "quiet", "keep-rounds"};
     if (invocation.count(name)) return false;
     // A suite's ground motions are its records: the pulse and the spectra grid do not apply.
     static const std::set<std::string> pulse_and_grid{"pulse", "cycles", "phase", "vertical-amplitude", "vertical-phase",

@@ -9,6 +9,7 @@
 #include "rocksweep/physics/history.hpp"
 #include "rocksweep/io/history_file.hpp"
 #include "rocksweep/io/output_claim.hpp"
+#include "rocksweep/records/record.hpp"
 
 #ifndef ROCKSWEEP_VERSION
 #define ROCKSWEEP_VERSION "unknown"
@@ -19,7 +20,10 @@ namespace rocksweep {
 int run_simulate(const Options& o, const SimulateCommand& cmd, const std::string& config_text) {
     const std::string& output = cmd.output;
     const bool quiet = cmd.quiet;
-    const CellModel m = make_single_cell(o);
+    Record record;
+    const CellModel m = make_single_cell(o, &record);
+    // Before any work: a record read in the wrong unit shows here, whatever comes of it.
+    if (!quiet && !o.single.record.empty()) std::cout << "record " << o.single.record << ": " << record_facts(record) << "\n";
     const IntegratorSettings settings = make_settings(o.numerics);
     const std::string ext = std::filesystem::path(output).extension().string();
     if (ext != ".h5" && ext != ".csv") throw InputError("output", output, "a file name ending in .h5 or .csv");

@@ -2,15 +2,19 @@
 // every scenario; scheduled, checkpointed and resumed like `rocksweep sweep`.
 #include "rocksweep/app/suite_command.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
 #include <iomanip>
 #include <optional>
 
 #include "rocksweep/app/memory_budget.hpp"
 #include "rocksweep/app/option_checks.hpp"
+#include "rocksweep/app/resume_check.hpp"
 #include "rocksweep/app/run_support.hpp"
 #include "rocksweep/core/errors.hpp"
 #include "rocksweep/io/output_claim.hpp"
+#include "rocksweep/io/run_inputs.hpp"
 #include "rocksweep/io/suite_file.hpp"
 #include "rocksweep/parallel/progress.hpp"
 #include "rocksweep/parallel/scheduler.hpp"
@@ -82,6 +86,16 @@ void check_suite_options(const CLI::App& app, const CLI::App& suite, const std::
         throw InputError("radius-points", std::to_string(cmd.radius_points), "1 without --radius-range (the block's own R)");
     if (cmd.alpha_range.empty() && cmd.alpha_points != 1)
         throw InputError("alpha-points", std::to_string(cmd.alpha_points), "1 without --alpha-range (the block's own alpha)");
+    // Each threshold is one row of the fragility datasets, read as increasing damage.
+    const std::vector<double>& states = cmd.damage_states;
+    if (std::adjacent_find(states.begin(), states.end(), std::greater_equal<double>()) != states.end()) {
+        std::string given;
+        for (double x : states) {
+            if (!given.empty()) given += ' ';
+            given += format_short(x);
+        }
+        throw InputError("damage-states", given, "thresholds in increasing order, each once (one fragility row each)");
+    }
 }
 
 SuiteSpec make_suite_spec(const Options& opts, const SuiteCommand& cmd) {
@@ -107,6 +121,19 @@ SuiteSpec make_suite_spec(const Options& opts, const SuiteCommand& cmd) {
     SuiteSpec spec = make_suite_spec(cmd.suite, base.block, base.scenarios,
                                      parse_intensity_measure("intensity-measure", cmd.measure), levels, radii, alphas,
                                      motions);
+    for (const SuiteMember& m : spec.records) {
+        if (m.motion >= 0) continue;  // made, not read: no file, its PGA is the model's
+        const std::string where = cmd.suite + " line " + std::to_string(m.entry.line);
+        // No output may replace a record of the suite (io/run_inputs.hpp).
+        note_input("record " + m.entry.name + " of the --suite file (" + where + ")", m.entry.source.path);
+        if (m.entry.source.vertical)
+            note_input("record " + m.entry.name + "'s vertical file (" + where + ")", m.entry.source.vertical->path);
+        if (!opts.numerics.record_any_pga && !plausible_pga(m.record))
+            throw InputError("suite", where,
+                             "record " + m.entry.name + " (" + m.record.path + "): " +
+                                 implausible_pga(m.record, "pass --record-any-pga to accept every record of the suite"));
+    }
+    check_record_names(spec);  // before any work: a name the output cannot hold
     spec.equations = base.equations;
     spec.impact_threshold = base.impact_threshold;
     spec.friction = base.friction;
@@ -139,12 +166,15 @@ struct Start {
     bool complete = false;  ///< resumed a finished suite: nothing to do
 };
 
-void prepare_output(Start& s, const Plan& plan, const SweepCommand& cmd, std::ostream& log) {
+void prepare_output(Start& s, const Plan& plan, const SweepCommand& cmd, const std::string& config_text, std::ostream& log) {
     if (cmd.resume && cmd.overwrite) throw InputError("resume", "with --overwrite", "one of --resume, --overwrite");
     s.claim.emplace("output", cmd.output);
     s.results.resize(plan.spec.cell_count());
     const bool exists = s.claim->exists();
-    if (exists && cmd.resume) s.results = read_suite_results(cmd.output, plan.spec, plan.settings);
+    if (exists && cmd.resume) {
+        s.results = read_suite_results(cmd.output, plan.spec, plan.settings);
+        check_resumed_config(cmd.output, read_provenance_config(cmd.output), config_text);
+    }
     else if (exists && !cmd.overwrite)
         throw InputError("output", cmd.output, "a new file; it exists: pass --resume to continue it or --overwrite to replace it");
     s.todo = missing_ranges(s.results.done);
@@ -191,7 +221,7 @@ int run_suite(const Options& opts, const SuiteCommand& cmd, const std::string& c
 
     Start start;
     const OutputVerdict verdict = agree_on_output(
-        mpi, log, [&] { prepare_output(start, plan, cmd.run, log); return start.complete; }, [&] { start.claim.reset(); });
+        mpi, log, [&] { prepare_output(start, plan, cmd.run, config_text, log); return start.complete; }, [&] { start.claim.reset(); });
     if (verdict != OutputVerdict::go) return exit_status(verdict);
 
     const Provenance base{ROCKSWEEP_VERSION, config_text, utc_now(), mpi.size(), 0.0};
@@ -210,7 +240,7 @@ int run_suite(const Options& opts, const SuiteCommand& cmd, const std::string& c
         }
         last_save = MpiSession::wall_time();
     };
-    const auto scheduler = make_mpi_scheduler(mpi.comm());
+    const auto scheduler = make_scheduler(mpi);
     std::size_t todo = 0;
     for (const IndexRange& r : start.todo) todo += r.count;
     Progress progress(todo, cmd.run.quiet || !mpi.is_root());
@@ -233,11 +263,15 @@ int run_suite(const Options& opts, const SuiteCommand& cmd, const std::string& c
     });
     const SinkFn sink = cell_results_sink(results, done_now);
 
-    if (mpi.is_root() && !cmd.run.quiet)
-        log << (spec.motions ? "synthetic motions: " + spec.motions->describe() + "\n" : "")
-            << "suite: " << spec.scenarios.size() << " scenarios x " << spec.records.size() << " records x " << spec.alphas_rad.size()
+    if (mpi.is_root() && !cmd.run.quiet) {
+        // What each record is as read: a wrong unit shows before the results are believed.
+        for (const SuiteMember& m : spec.records)
+            if (m.motion < 0) log << "record " << m.entry.name << ": " << record_facts(m.record) << "\n";
+        if (spec.motions) log << "synthetic motions: " << spec.motions->describe() << "\n";
+        log << "suite: " << spec.scenarios.size() << " scenarios x " << spec.records.size() << " records x " << spec.alphas_rad.size()
             << " slendernesses x " << spec.radii_m.size() << " block sizes x " << spec.intensity.points << " levels = " << spec.cell_count() << " cells on " << mpi.size()
             << " rank(s) -> " << cmd.run.output << "\n";
+    }
     scheduler->run(start.todo, so, compute, sink);
     progress.update(done_now);
     progress.finish();

@@ -13,6 +13,7 @@
 #include "rocksweep/grid/refine_planes.hpp"
 #include "rocksweep/grid/work_part.hpp"
 #include "rocksweep/io/output_claim.hpp"
+#include "rocksweep/app/resume_check.hpp"
 #include "rocksweep/io/spectra_stream.hpp"
 #include "rocksweep/parallel/progress.hpp"
 #include "rocksweep/parallel/scheduler.hpp"
@@ -118,6 +119,10 @@ void SweepRun::prepare_output() {
     if (exists && !cmd_.resume && !cmd_.overwrite)
         throw InputError("output", cmd_.output, "a new file; it exists: pass --resume to continue it or --overwrite to replace it");
     const bool resuming = exists && cmd_.resume;
+    if (resuming) {  // the file's own checks first (their messages are the more precise), then every option
+        check_spectra_file(cmd_.output, spec_, settings_);
+        check_resumed_config(cmd_.output, read_provenance_config(cmd_.output), prov_.config_text);
+    }
     stream_.emplace(cmd_.output, spec_, settings_, prov_, resuming);
     const std::size_t total = spec_.cell_count();
     todo_ = restrict_to_part(resuming ? missing_cells(*stream_, total) : std::vector<IndexRange>{{0, total}}, part_);
@@ -161,7 +166,7 @@ void SweepRun::save() {
 }
 
 ScheduleStats SweepRun::run_pass(const std::vector<IndexRange>& todo) {
-    const auto scheduler = make_mpi_scheduler(mpi_.comm());
+    const auto scheduler = make_scheduler(mpi_);
     std::size_t n = 0, done_now = 0;
     for (const IndexRange& r : todo) n += r.count;
     Progress bar(n, cmd_.quiet || !mpi_.is_root());

@@ -63,4 +63,16 @@ RegionScore score_cells(const SweepResults& r, std::size_t first, std::size_t co
     return t.score();
 }
 
+std::vector<RegionScore> score_levels(const SweepResults& r, std::size_t first, std::size_t records, std::size_t levels,
+                                      const DesignConstraints& c) {
+    if (records == 0 || levels == 0 || first + records * levels > r.size()) throw std::invalid_argument("score_levels: cells out of range");
+    std::vector<RegionScore> out;
+    for (std::size_t l = 0; l < levels; ++l) {
+        Tally t{r, c};
+        for (std::size_t i = 0; i < records; ++i) t.add(first + i * levels + l, 1.0);
+        out.push_back(t.score());
+    }
+    return out;
+}
+
 }  // namespace rocksweep

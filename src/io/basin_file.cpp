@@ -65,6 +65,7 @@ void write_scenario(const h5::Group& basins, const BasinScenario& s, const Basin
 void write_basin_file(const std::string& path, const BasinFile& f) {
     h5::publish_h5_atomically(path, [&](const h5::File& file) {
         h5::write_attribute(file, "title", "rocksweep basins of attraction");
+        h5::write_attribute(file, "Conventions", h5::cf_conventions);
         h5::write_attribute(file, "format", "rocksweep basin");
         h5::write_attribute(file, "format_version", basin_format_version);
         h5::write_attribute(file, "rocksweep_version", f.version);

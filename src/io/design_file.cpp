@@ -21,7 +21,8 @@ const char* const criterion_words =
 void check_curve(const char* name, const DesignCurve& c) {
     const std::size_t n = c.variable.size();
     const bool theta_ok = c.theta_f_ratio.empty() || c.theta_f_ratio.size() == n;
-    if (n == 0 || c.acceptable.size() != n || c.standing.size() != n || c.round.size() != n || !theta_ok)
+    const bool rates_ok = c.rate.size() == c.standing_rate.size() && (c.rate.empty() || c.rate.size() == n);
+    if (n == 0 || c.acceptable.size() != n || c.standing.size() != n || c.round.size() != n || !theta_ok || !rates_ok)
         throw std::invalid_argument(std::string("write_design: the columns of ") + name + " differ in length or are empty");
     if (c.optimum >= n || c.near_lo > c.optimum || c.near_hi < c.optimum || c.near_hi >= n)
         throw std::invalid_argument(std::string("write_design: the optimum of ") + name + " or its near-optimal run is out of range");
@@ -46,10 +47,14 @@ void write_column(const h5::Group& g, const char* name, const std::vector<T>& v,
 }
 
 /// The columns both curves share, against their variable's scale.
-void write_curve(const h5::Group& g, const DesignCurve& c, const h5::Dataset& scale) {
+void write_curve(const h5::Group& g, const DesignCurve& c, const h5::Dataset& scale, bool risk) {
     write_column(g, "safe_fraction", c.acceptable, scale, "1", "the criterion: acceptable share of the hazard region");
     write_column(g, "standing_fraction", c.standing, scale, "1", "share of the hazard region where the block does not overturn");
     write_column(g, "round", c.round, scale, "1", "search round that evaluated the value (0: the coarse one)");
+    if (risk) {
+        write_column(g, "annual_rate", c.rate, scale, "1/yr", "annual rate of the unacceptable state at the site (what the design minimises)");
+        write_column(g, "annual_rate_overturning", c.standing_rate, scale, "1/yr", "annual rate of overturning at the site, limits ignored");
+    }
     h5::write_attribute(g, "optimum_index", c.optimum);
     h5::write_attribute(g, "optimum_safe_fraction", c.acceptable[c.optimum]);
     const double near[2] = {c.variable[c.near_lo], c.variable[c.near_hi]};
@@ -69,6 +74,7 @@ void write_search(const h5::Group& g, const SearchSettings& s, const char* range
 void write_root(const h5::File& f, const DesignReport& r) {
     const Block& b = r.hazard.block;
     h5::write_attribute(f, "title", "rocksweep anchorage design");
+    h5::write_attribute(f, "Conventions", h5::cf_conventions);
     h5::write_attribute(f, "format_version", format_version);
     h5::write_attribute(f, "criterion", criterion_words);
     h5::write_attribute(f, "half_width_m", b.half_width_m());
@@ -106,6 +112,16 @@ void write_root(const h5::File& f, const DesignReport& r) {
     h5::write_attribute(f, "near_optimal", r.near_optimal);
     h5::write_attribute(f, "free_safe_fraction", r.free.acceptable);
     h5::write_attribute(f, "free_standing_fraction", r.free.standing);
+    if (r.risk) {
+        h5::write_attribute(f, "criterion", std::string("exp(-rate t): the probability that the block stays acceptable through the "
+                                                        "exposure time at the site, rate = the annual rate (docs/risk.md, empirical fractions) "
+                                                        "of the runs not acceptable by the ") + criterion_words);
+        h5::write_attribute(f, "hazard_curve_file", r.risk->path);
+        h5::write_attribute(f, "hazard_measure", r.risk->measure);
+        h5::write_attribute(f, "exposure_years", r.risk->exposure_years);
+        h5::write_attribute(f, "free_annual_rate", r.free_rate);
+        h5::write_attribute(f, "free_annual_rate_overturning", r.free_standing_rate);
+    }
 }
 
 void write_contents(const h5::File& f, const DesignReport& r, const Provenance& prov) {
@@ -115,7 +131,7 @@ void write_contents(const h5::File& f, const DesignReport& r, const Provenance& 
         const DesignCurve& c = r.constant;
         const h5::Group g = f.create_group("constant");
         const h5::Dataset k = write_scale(g, "stiffness", c.variable, "N/m", "anchorage stiffness K");
-        write_curve(g, c, k);
+        write_curve(g, c, k, r.risk.has_value());
         write_column(g, "theta_f_ratio", c.theta_f_ratio, k, "1", "fracture angle theta_f / alpha at F_u");
         h5::write_attribute(g, "optimum_stiffness_N_per_m", c.variable[c.optimum]);
         h5::write_attribute(g, "optimum_theta_f_ratio", c.theta_f_ratio[c.optimum]);
@@ -125,7 +141,7 @@ void write_contents(const h5::File& f, const DesignReport& r, const Provenance& 
         const DesignCurve& c = r.adaptive;
         const h5::Group g = f.create_group("adaptive");
         const h5::Dataset rho = write_scale(g, "kmin_ratio", c.variable, "1", "K_min / K_max");
-        write_curve(g, c, rho);
+        write_curve(g, c, rho, r.risk.has_value());
         h5::write_attribute(g, "k_max_N_per_m", r.k_max_n_per_m);
         h5::write_attribute(g, "k_max_theta_f_ratio", r.k_max_theta_f_ratio);
         h5::write_attribute(g, "optimum_kmin_ratio", c.variable[c.optimum]);

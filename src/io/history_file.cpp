@@ -62,6 +62,7 @@ void write_h5_contents(const h5::File& f, const History& h, const std::vector<Co
                        const std::vector<std::pair<std::string, double>>& number_attrs) {
     const CellResult& r = h.result;
     h5::write_attribute(f, "title", "rocksweep time history");
+    h5::write_attribute(f, "Conventions", h5::cf_conventions);
     h5::write_attribute(f, "outcome", to_string(r.outcome));
     h5::write_attribute(f, "outcome_code", static_cast<std::int64_t>(r.outcome));
     h5::write_attribute(f, "impacts", r.impacts);

@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "rocksweep/core/errors.hpp"
+#include "rocksweep/io/run_inputs.hpp"
 
 namespace rocksweep {
 
@@ -27,6 +28,9 @@ std::string lock_of(const std::string& path) { return path + lock_suffix; }
 
 void check_name(const std::string& field, const std::string& path, const fs::path& dir) {
     if (path.empty()) throw InputError(field, "\"\"", "a file name");
+    // -o=x.h5 hands CLI11 the value "=x.h5" (only --output=x.h5 splits at '='): never a name meant.
+    if (path[0] == '=')
+        throw InputError(field, path, "a file name that does not begin with '=' (write -o FILE or --output=FILE)");
     const std::string file = fs::path(path).filename().string();
     if (file.empty() || file == "." || file == "..") throw InputError(field, path, "a file name, not a directory");
     long name_max = ::pathconf(dir.c_str(), _PC_NAME_MAX);
@@ -104,6 +108,7 @@ OutputClaim::OutputClaim(const std::string& field, const std::string& path) : pa
     const fs::path p(path);
     const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
     check_name(field, path, dir);
+    refuse_input_as_output(field, path);
     check_place(field, path, dir);
     lock_fd_ = take_lock(field, path);
     try {

@@ -13,6 +13,7 @@
 #include "rocksweep/core/errors.hpp"
 #include "rocksweep/io/grid_layout.hpp"
 #include "rocksweep/io/hdf5.hpp"
+#include "rocksweep/io/results_checksum.hpp"
 #include "spectra_layout.hpp"
 
 namespace rocksweep {
@@ -86,6 +87,7 @@ struct Columns {
 void write_root(const h5::File& f, const SweepSpec& spec, const IntegratorSettings& settings,
                 const SweepResults* r) {
     h5::write_attribute(f, "title", "rocksweep overturning spectra");
+    h5::write_attribute(f, "Conventions", h5::cf_conventions);
     h5::write_attribute(f, "format_version", format_version);
     for (const NamedNumber& n : root_numbers(spec)) h5::write_attribute(f, n.name, n.value);
     // Numbers that are integers in meaning (max_steps, energy_stop) stay float64 like the
@@ -133,6 +135,9 @@ void write_scenario(const h5::Group& spectra, std::size_t index, const SweepSpec
     const Scenario& s = spec.scenarios[index];
     const h5::Group g = spectra.create_group(s.name);
     h5::write_attribute(g, "index", index);  // position in the config: group listings sort by name
+    // Of results written whole; a streamed file's is filled in place when its run finishes.
+    const std::size_t per = spec.cells_per_scenario();
+    h5::write_attribute(g, results_checksum_attribute, r ? results_checksum(*r, index * per, per) : std::int64_t{0});
     for (const NamedText& t : scenario_texts(s)) h5::write_attribute(g, t.name, t.value);
     for (const NamedNumber& n : scenario_numbers(s)) h5::write_attribute(g, n.name, n.value);
     const GridGroup grid(g, axes);

@@ -8,6 +8,7 @@
 #include "rocksweep/core/errors.hpp"
 #include "rocksweep/io/grid_layout.hpp"
 #include "rocksweep/io/hdf5.hpp"
+#include "rocksweep/io/results_checksum.hpp"
 #include "rocksweep/io/spectra_file.hpp"
 #include "spectra_layout.hpp"
 
@@ -121,6 +122,43 @@ SweepResults read_spectra_results(const std::string& path, const SweepSpec& spec
     return r;
 }
 
+std::vector<std::string> verify_results_checksums(const std::string& path, const SweepSpec& spec, const SweepResults& r) {
+    std::vector<std::string> unverified;
+    const h5::File f = h5::File::open_read_only(path);
+    const h5::Group spectra = f.open_group("spectra");
+    const std::size_t per = spec.cells_per_scenario();
+    for (std::size_t s = 0; s < spec.scenarios.size(); ++s) {
+        const std::string& name = spec.scenarios[s].name;
+        const h5::Group g = spectra.open_group(name);
+        const std::int64_t stored =
+            g.has_attribute(results_checksum_attribute) ? h5::read_int64_attribute(g, results_checksum_attribute) : 0;
+        if (stored == 0) {
+            unverified.push_back(name);
+            continue;
+        }
+        if (results_checksum(r, s * per, per) != stored)
+            throw InputError("part file", path,
+                             "a part whose results match the checksum it stored when its run finished (those of scenario " +
+                                 name + " do not: they were changed after they were written)");
+    }
+    return unverified;
+}
+
+void check_spectra_file(const std::string& path, const SweepSpec& spec, const IntegratorSettings& settings) {
+    spectra_detail::open_checked(path, spec, settings, nullptr).close();
+}
+
+std::string read_provenance_config(const std::string& path) {
+    try {
+        const h5::File f = h5::File::open_read_only(path);
+        if (!f.exists("provenance")) return "";
+        const h5::Group g = f.open_group("provenance");
+        return g.has_attribute("config") ? h5::read_string_attribute(g, "config") : "";
+    } catch (const Hdf5Error&) {
+        return "";
+    }
+}
+
 SweepSpec with_recorded_refinement(const std::string& path, SweepSpec spec) {
     try {
         const h5::File f = h5::File::open_read_only(path);
@@ -136,13 +174,13 @@ h5::File spectra_detail::open_checked(const std::string& path, const SweepSpec& 
                                       const IntegratorSettings& settings, SweepResults* r) {
     // What the file is, in the user's words, before any HDF5 detail.
     auto not_spectra = [&](const std::string& what) {
-        return InputError("output", path, "a rocksweep spectra file to resume; it is " + what);
+        return InputError("output", path, "a rocksweep spectra file; it is " + what);
     };
     std::optional<h5::File> opened;  // the file, or a message about what it is
     try {
         opened.emplace(h5::File::open_read_only(path));
     } catch (const Hdf5Error&) {
-        throw not_spectra("not an HDF5 file");
+        throw not_spectra("damaged or not an HDF5 file at all");
     }
     const h5::File& f = *opened;
     if (f.exists("theta") && f.exists("t")) throw not_spectra("a history written by rocksweep simulate");
@@ -158,9 +196,10 @@ h5::File spectra_detail::open_checked(const std::string& path, const SweepSpec& 
         read_contents(path, f, spec, settings, r);
         return std::move(*opened);
     } catch (const Hdf5Error& e) {
-        // A missing attribute or dataset means this is not a file we wrote for this layout.
+        // A missing attribute or dataset, or one HDF5 cannot read: not a file we wrote, or
+        // one damaged since (HDF5's own text often says nothing more).
         throw InputError("spectra file", path,
-                         std::string("a rocksweep spectra file (") + e.what() + ")");
+                         std::string("a rocksweep spectra file; it is damaged or not one (") + e.what() + ")");
     }
 }
 

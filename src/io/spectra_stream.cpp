@@ -17,6 +17,7 @@
 #include "rocksweep/core/errors.hpp"
 #include "rocksweep/grid/refine.hpp"
 #include "rocksweep/io/hdf5.hpp"
+#include "rocksweep/io/results_checksum.hpp"
 #include "spectra_layout.hpp"
 
 namespace rocksweep {
@@ -261,7 +262,10 @@ void SpectraStream::add_inferred(std::size_t scenario, std::size_t first, std::s
             cells.done[r.from + j] = cell_inferred;
         }
     done_count_ += n;
-    if (!runs.empty()) as_save(path_, [&] { write_runs(cells, runs); });
+    if (!runs.empty()) as_save(path_, [&] {
+        forget_checksums();
+        write_runs(cells, runs);
+    });
 }
 
 void SpectraStream::write_runs(const SweepResults& cells, const std::vector<Run>& runs) {
@@ -297,6 +301,7 @@ void SpectraStream::checkpoint() {
         ++runs.back().count;
     }
     as_save(path_, [&] {
+        forget_checksums();
         write_runs(cells, runs);
         if (!published_) publish();
         update_counts(false, nullptr);
@@ -329,8 +334,51 @@ void SpectraStream::update_counts(bool final, const double* wall_s) {
         h5::update_attribute(g, "ranks", std::int64_t{prov_.ranks});
         h5::update_attribute(g, "checkpoint_s", stats_.seconds);
         h5::update_attribute(g, "checkpoints", static_cast<std::int64_t>(stats_.checkpoints));
+        store_checksums(f);
     }
     f.close();
+}
+
+void SpectraStream::forget_checksums() {
+    // Before the first change to a published file (a resume): a kill from here on must not leave
+    // a checksum that no longer matches. A new file's are 0 until it finishes.
+    if (!published_ || checksums_forgotten_) return;
+    h5::File f = h5::File::open_for_update(path_);
+    {  // closed before the file
+        const h5::Group spectra = f.open_group("spectra");
+        for (const Scenario& sc : spec_.scenarios) {
+            const h5::Group g = spectra.open_group(sc.name);
+            if (g.has_attribute(results_checksum_attribute)) h5::update_attribute(g, results_checksum_attribute, std::int64_t{0});
+        }
+    }
+    f.close();
+    checksums_forgotten_ = true;
+}
+
+void SpectraStream::store_checksums(const h5::File& f) {
+    // Hashed from the file as it now holds the cells, a block at a time: rank 0 never holds
+    // the whole grid. A file from before checksums has no attribute to fill, and stays without.
+    const h5::Group spectra = f.open_group("spectra");
+    const std::size_t per = spec_.cells_per_scenario();
+    std::vector<unsigned char> block;
+    for (std::size_t s = 0; s < spec_.scenarios.size(); ++s) {
+        const h5::Group g = spectra.open_group(spec_.scenarios[s].name);
+        if (!g.has_attribute(results_checksum_attribute)) continue;
+        Fnv1a64 h;
+        std::size_t k = 0;
+        SweepResults none;
+        for_each_column(none, [&](const char* name, auto&) {
+            const std::size_t bytes = place_[s][k++].element_bytes;
+            for (std::size_t first = 0; first < per; first += scan_block) {
+                const std::size_t n = std::min(scan_block, per - first);
+                block.resize(n * bytes);
+                read_column(name, s * per + first, n, block.data());
+                h.add(block.data(), block.size());
+            }
+        });
+        h5::update_attribute(g, results_checksum_attribute, h.stored());
+    }
+    checksums_forgotten_ = false;
 }
 
 void SpectraStream::finish(double wall_s) {

@@ -13,7 +13,7 @@ namespace rocksweep {
 
 namespace {
 
-constexpr std::int64_t format_version = 2;  // 2: the alpha_rad axis
+constexpr std::int64_t format_version = 3;  // 2: the alpha_rad axis; 3: median -> median_intensity
 constexpr const char* kind = "suite";
 
 GridAxis record_axis(const SuiteSpec& spec) {
@@ -44,9 +44,15 @@ std::vector<io::NamedText> root_texts(const SuiteSpec& spec) {
 
 /// Datasets of /records: a record of one of these names would collide with them.
 std::set<std::string> records_datasets() {
-    std::set<std::string> names{"record", "intensity", "scale_factor", "pga_scaled_g"};
+    std::set<std::string> names{"record", "alpha_rad", "intensity", "scale_factor", "pga_scaled_g"};
     for (const IntensityField& f : intensity_fields) names.insert(f.name);
     return names;
+}
+
+std::string reserved_record_names() {
+    std::string out;
+    for (const std::string& n : records_datasets()) out += n + ", ";
+    return out + "names of dots only";
 }
 
 void write_records(const h5::File& f, const SuiteSpec& spec) {
@@ -157,10 +163,11 @@ void write_fragility(const h5::Group& scenario, const SuiteSpec& spec, const Sui
     };
     const char* units = intensity_units(spec.measure);
     const FitColumn columns[] = {
-        {"median", [](const FragilityFit& x) { return x.curve.median; }, units, "lognormal fit: median intensity"},
+        // Not `median`: xarray's Dataset.median() would hide a variable of that name (fr.median).
+        {"median_intensity", [](const FragilityFit& x) { return x.curve.median; }, units, "lognormal fit: median intensity"},
         {"beta", [](const FragilityFit& x) { return x.curve.beta; }, "1", "lognormal fit: dispersion (log standard deviation)"},
-        {"median_lo", [](const FragilityFit& x) { return x.median_lo; }, units, "95 % interval of the median: low end"},
-        {"median_hi", [](const FragilityFit& x) { return x.median_hi; }, units, "95 % interval of the median: high end"},
+        {"median_intensity_lo", [](const FragilityFit& x) { return x.median_lo; }, units, "95 % interval of the median: low end"},
+        {"median_intensity_hi", [](const FragilityFit& x) { return x.median_hi; }, units, "95 % interval of the median: high end"},
         {"beta_lo", [](const FragilityFit& x) { return x.beta_lo; }, "1", "95 % interval of beta: low end"},
         {"beta_hi", [](const FragilityFit& x) { return x.beta_hi; }, "1", "95 % interval of beta: high end"},
         {"se_ln_median", [](const FragilityFit& x) { return x.se_ln_median; }, "1", "standard error of ln(median)"},
@@ -183,6 +190,7 @@ void write_fragility(const h5::Group& scenario, const SuiteSpec& spec, const Sui
 void write_contents(const h5::File& f, const SuiteSpec& spec, const SweepResults& r, const std::vector<DamageState>& states,
                     const Provenance& prov, const IntegratorSettings& settings) {
     h5::write_attribute(f, "title", "rocksweep record-suite sweep");
+    h5::write_attribute(f, "Conventions", h5::cf_conventions);
     h5::write_attribute(f, "format_version", format_version);
     h5::write_attribute(f, "kind", kind);
     io::write_numbers(f, io::block_numbers(spec.block));
@@ -250,16 +258,27 @@ SweepResults read_contents(const std::string& path, const h5::File& f, const Sui
 
 }  // namespace
 
+void check_record_names(const SuiteSpec& spec) {
+    const std::set<std::string> taken = records_datasets();
+    for (const SuiteMember& m : spec.records) {
+        const std::string& name = m.entry.name;
+        std::string why;
+        // "." and ".." are not names of an HDF5 link: "/records/." is /records itself.
+        if (name.find_first_not_of('.') == std::string::npos) why = "a name of dots only is no HDF5 group name";
+        else if (taken.count(name)) why = "it is the name of a dataset of /records beside the records' groups";
+        if (!why.empty())
+            throw InputError("suite", spec.suite_path + " line " + std::to_string(m.entry.line),
+                             "record name '" + name + "' cannot name its group /records/" + name + " of the output (" + why +
+                                 "); reserved: " + reserved_record_names());
+    }
+}
+
 void write_suite(const std::string& path, const SuiteSpec& spec, const SweepResults& r,
                  const std::vector<DamageState>& states, const Provenance& prov, const IntegratorSettings& settings) {
     if (r.size() != spec.cell_count())
         throw std::invalid_argument("write_suite: " + std::to_string(r.size()) + " results for " +
                                     std::to_string(spec.cell_count()) + " cells");
-    const std::set<std::string> taken = records_datasets();
-    for (const SuiteMember& m : spec.records)
-        if (taken.count(m.entry.name))
-            throw InputError("suite", spec.suite_path + " line " + std::to_string(m.entry.line),
-                             "record names other than the datasets of /records (" + m.entry.name + ")");
+    check_record_names(spec);
     h5::publish_h5_atomically(path, [&](const h5::File& f) { write_contents(f, spec, r, states, prov, settings); });
 }
 

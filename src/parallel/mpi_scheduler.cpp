@@ -82,4 +82,8 @@ private:
 
 std::unique_ptr<Scheduler> make_mpi_scheduler(MPI_Comm comm) { return std::make_unique<MpiScheduler>(comm); }
 
+std::unique_ptr<Scheduler> make_scheduler(const MpiSession& session) {
+    return session.uses_mpi() ? make_mpi_scheduler(session.comm()) : make_serial_scheduler();
+}
+
 }  // namespace rocksweep

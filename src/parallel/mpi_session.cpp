@@ -1,5 +1,6 @@
 #include "rocksweep/parallel/mpi_session.hpp"
 
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
@@ -18,9 +19,17 @@ bool mpi_active() noexcept {
 
 }  // namespace
 
+bool launched_by_mpi_launcher() noexcept {
+    for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE"})
+        if (std::getenv(name) != nullptr) return true;
+    return false;
+}
+
 MpiSession::MpiSession(int& argc, char**& argv) {
     int initialized = 0;
-    MPI_Initialized(&initialized);
+    MPI_Initialized(&initialized);  // one of the few calls allowed before MPI_Init
+    if (!initialized && !launched_by_mpi_launcher()) return;  // rank 0 of 1, without MPI
+    uses_mpi_ = true;
     if (!initialized) {
         if (MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &thread_level_) != MPI_SUCCESS)
             throw std::runtime_error("MPI_Init_thread failed");
@@ -51,7 +60,10 @@ void MpiSession::broadcast(std::vector<double>& values) const {
     if (n > 0) MPI_Bcast(values.data(), static_cast<int>(n), MPI_DOUBLE, 0, comm());
 }
 
-double MpiSession::wall_time() noexcept { return MPI_Wtime(); }
+double MpiSession::wall_time() noexcept {
+    // Not MPI_Wtime: MPI may not be initialised, and only differences on one rank are used.
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
 
 void MpiSession::abort(int code) const noexcept {
     std::fflush(stdout);

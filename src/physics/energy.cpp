@@ -163,9 +163,14 @@ FreeFate free_fate(const CellModel& m, int side, double v, bool left_intact, boo
         if (!sw.bounded) return f;
         f.max_phi = std::max(f.max_phi, sw.peak);
         f.peak_force = std::max(f.peak_force, rocking::SpringLaw::force_ratio(fcoef, sw.peak));
-        const double v_ret = std::sqrt(2.0 * sw.ke_return);
+        // A swing returns at most the speed it was launched with (K_min <= K_max on the way
+        // back): launched below the threshold, it ends in a settling impact whatever rounding
+        // makes of a return energy near 0 (a near-plastic e, e^2 ke below the smallest double,
+        // once left a NaN here and 10^6 swings; physics.md, "Impacts, rest and outcomes").
+        const bool launched_settling = ke < 0.5 * m.v_threshold * m.v_threshold;
+        const double v_ret = std::sqrt(2.0 * std::max(sw.ke_return, 0.0));
         ++f.impacts_total;
-        if (v_ret < m.v_threshold) {
+        if (launched_settling || v_ret < m.v_threshold) {
             f.decided = true;
             return f;
         }

@@ -176,6 +176,9 @@ Components read_text_components(const RecordSource& s, Record& r) {
     if (same_file && s.vertical->column == 0)
         throw InputError("record-vertical-column", "(missing)", "the column of " + s.path + " holding the vertical component");
     if (s.vertical) r.vertical_column = acceleration_column("record-vertical-column", s.format, s.vertical->column);
+    if (same_file && r.vertical_column == r.column)
+        throw InputError("record-vertical-column", std::to_string(r.vertical_column),
+                         "a column other than the horizontal component's (" + std::to_string(r.column) + ") of " + s.path);
     std::vector<detail::Wanted> columns{{r.column, "record-column"}};
     const detail::Wanted vertical{r.vertical_column, "record-vertical-column"};
     if (same_file) columns.push_back(vertical);
@@ -254,6 +257,32 @@ Record read_record(const RecordSource& s) {
         r.ay_g.resize(n, 0.0);
     }
     return r;
+}
+
+double pga_as_read_g(const Record& r) {
+    double peak = 0.0;
+    for (double a : r.ax_g) peak = std::max(peak, std::abs(a));
+    return peak / std::abs(r.scale);
+}
+
+bool plausible_pga(const Record& r) {
+    const double pga = pga_as_read_g(r);
+    return pga >= record_pga_min_g && pga <= record_pga_max_g;
+}
+
+std::string record_facts(const Record& r) {
+    const double pga = pga_as_read_g(r);
+    return "PGA " + format_short(pga, 3) + " g (" + format_short(pga * standard_gravity, 3) + " m/s^2) as read in " + r.units +
+           ", dt " + format_short(r.dt_s, 4) + " s, " + format_short(r.duration_s(), 4) + " s, " + std::to_string(r.npts) +
+           " samples";
+}
+
+std::string implausible_pga(const Record& r, const std::string& accept) {
+    const double pga = pga_as_read_g(r), in_unit = pga / units_to_g("record-units", r.units);
+    return "its peak ground acceleration as read in " + r.units + ", " + format_short(in_unit, 3) + " " + r.units + ", is " +
+           format_short(pga, 3) + " g (" + format_short(pga * standard_gravity, 3) + " m/s^2), outside the " +
+           format_short(record_pga_min_g) + " to " + format_short(record_pga_max_g) +
+           " g of a strong-motion record (docs/records.md): check its unit, or " + accept;
 }
 
 namespace {

@@ -90,6 +90,10 @@ private:
             if (std::find(suite_reading_columns.begin(), suite_reading_columns.end(), cells[c]) == suite_reading_columns.end())
                 suite.metadata_columns.push_back(cells[c]);
         }
+        // A spreadsheet in a locale with decimal commas saves "CSV" with ';' between cells.
+        if (cells.size() == 1 && cells[0].find(';') != std::string::npos)
+            throw error("cells separated by ',' (this header is separated by ';', as a spreadsheet with decimal "
+                        "commas saves CSV: save as 'CSV UTF-8 (comma delimited)' with '.' decimals)");
         for (const char* required : {"name", "file", "format"})
             if (!index_.count(required))
                 throw error(std::string("a header with a '") + required + "' column (see docs/records.md)");
@@ -113,6 +117,12 @@ private:
         if (x != std::floor(x) || x < lo || x > 1e6)
             throw error(column + " '" + cell(cells, column) + "' is not a whole number >= " + std::to_string(lo));
         return static_cast<int>(x);
+    }
+
+    /// A column of the record's file: counted from 1, empty for the format's default (0).
+    int column_number(const std::vector<std::string>& cells, const std::string& column) const {
+        if (cell(cells, column).empty()) return 0;
+        return integer(cells, column, 1);
     }
 
     std::string existing_file(const std::string& column, const std::string& name) const {
@@ -151,13 +161,13 @@ private:
         if (s.dt_s != 0.0 && !(s.dt_s >= record_dt_min_s && s.dt_s <= record_dt_max_s))
             throw error("dt " + format_number(s.dt_s) + " s is outside " + format_number(record_dt_min_s) + " to " +
                         format_number(record_dt_max_s) + " s");
-        s.column = integer(cells, "column", 0);
+        s.column = column_number(cells, "column");
         s.scale = number(cells, "scale", 1.0);
         if (s.scale == 0.0) throw error("scale 0 would erase the record");
         s.skip_lines = integer(cells, "skip_lines", 0);
         s.path = existing_file("file", cell(cells, "file"));
         const std::string vfile = cell(cells, "vertical_file");
-        const int vcolumn = integer(cells, "vertical_column", 0);
+        const int vcolumn = column_number(cells, "vertical_column");
         if (!vfile.empty() || vcolumn != 0)
             s.vertical = VerticalSource{vfile.empty() ? "" : existing_file("vertical_file", vfile), vcolumn};
         for (const std::string& m : suite.metadata_columns) r.metadata.push_back(cell(cells, m));
@@ -175,5 +185,22 @@ private:
 }  // namespace
 
 RecordSuite read_record_suite(const std::string& path) { return SuiteReader(path).read(); }
+
+Record read_suite_record(const RecordSuite& suite, const SuiteRecord& entry) {
+    // read_record's fields (simulate's options without dashes) and the suite's columns for them.
+    static const std::map<std::string, std::string> column_of{
+        {"record", "file"},          {"record-format", "format"}, {"record-units", "units"},
+        {"record-dt", "dt"},         {"record-column", "column"}, {"record-scale", "scale"},
+        {"record-skip-lines", "skip_lines"}, {"record-vertical", "vertical_file"},
+        {"record-vertical-column", "vertical_column"}};
+    try {
+        return read_record(entry.source);
+    } catch (const InputError& e) {
+        const auto it = column_of.find(e.field());
+        const std::string column = it == column_of.end() ? e.field() : it->second;
+        throw InputError("suite", suite.path + " line " + std::to_string(entry.line),
+                         "column '" + column + "' = " + e.value() + ": " + e.allowed());
+    }
+}
 
 }  // namespace rocksweep

@@ -117,7 +117,7 @@ SuiteSpec make_suite_spec(const std::string& suite_path, const Block& block, std
         const RecordSuite suite = read_record_suite(suite_path);
         spec.metadata_columns = suite.metadata_columns;
         for (const SuiteRecord& entry : suite.records) {
-            SuiteMember m{entry, read_record(entry.source), {}, {}, -1};
+            SuiteMember m{entry, read_suite_record(suite, entry), {}, {}, -1};
             m.measures = intensity_measures(m.record);
             m.pulse = to_pulse(m.record, block.gravity);
             require_measure(measure, m, suite_path + " line " + std::to_string(entry.line));

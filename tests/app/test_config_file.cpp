@@ -7,6 +7,7 @@
 #include "rocksweep/core/errors.hpp"
 #include "rocksweep/app/option_checks.hpp"
 #include "rocksweep/app/options.hpp"
+#include "rocksweep/app/stored_options.hpp"
 
 using namespace rocksweep;
 
@@ -89,6 +90,27 @@ TEST(TomlConfig, RefusesWithTheLine) {
     for (const auto& [text, message] : cases) EXPECT_EQ(refusal(text), message) << text;
 }
 
+// TOML's integers in base 16, 8 and 2 (issue 21): handed on in decimal, as the validators read.
+TEST(TomlConfig, ReadsHexOctalAndBinaryIntegers) {
+    const auto items = read("a = 0x10\nb = 0xDEAD_beef\nc = 0o17\nd = 0b1010\ne = [0x1, 0o7]\nf = 0x7fffffffffffffff\n");
+    ASSERT_EQ(items.size(), 6u);
+    EXPECT_EQ(items[0].inputs, std::vector<std::string>{"16"});
+    EXPECT_EQ(items[1].inputs, std::vector<std::string>{"3735928559"});
+    EXPECT_EQ(items[2].inputs, std::vector<std::string>{"15"});
+    EXPECT_EQ(items[3].inputs, std::vector<std::string>{"10"});
+    EXPECT_EQ(items[4].inputs, (std::vector<std::string>{"1", "7"}));
+    EXPECT_EQ(items[5].inputs, std::vector<std::string>{"9223372036854775807"});
+    const std::pair<std::string, std::string> cases[] = {
+        {"x = +0x10\n", "line 1: '+0x10' is not a number (TOML's 0x, 0o and 0b integers take no sign)"},
+        {"x = 0x\n", "line 1: '0x' is not a hexadecimal integer (no digits)"},
+        {"x = 0o8\n", "line 1: '0o8' is not an octal integer (digits, '_' only between two)"},
+        {"x = 0b12\n", "line 1: '0b12' is not a binary integer (digits, '_' only between two)"},
+        {"x = 0x_1\n", "line 1: '0x_1' is not a hexadecimal integer (digits, '_' only between two)"},
+        {"x = 0x8000000000000000\n", "line 1: '0x8000000000000000' is larger than TOML's largest integer, 2^63 - 1"},
+    };
+    for (const auto& [text, message] : cases) EXPECT_EQ(refusal(text), message) << text;
+}
+
 TEST(TomlConfig, ReadsBackWhatEffectiveConfigWrites) {
     CLI::App app;
     double mass = 3361.0, gravity = 9.81, radius = 0.0;
@@ -133,6 +155,15 @@ TEST(TomlConfig, ReadsBackWhatEffectiveConfigWrites) {
     EXPECT_EQ(items[5].parents, std::vector<std::string>{"sweep"});
     EXPECT_EQ(items[5].name, "chunk");
     EXPECT_EQ(items[5].inputs, std::vector<std::string>{"64"});
+}
+
+// What a design's --resume compares: the stored effective config, key by key.
+TEST(StoredOptions, ReadsTheKeysOfAnEffectiveConfig) {
+    const auto v = config_values("# comment\nmass = 3361.0\nanchorages = [\"free\", \"constant\"]\n[design]\ndesign.refine = 4\n");
+    ASSERT_EQ(v.size(), 3u);
+    EXPECT_EQ(v.at("mass"), "3361.0");
+    EXPECT_EQ(v.at("anchorages"), "[\"free\", \"constant\"]");
+    EXPECT_EQ(v.at("design.refine"), "4");
 }
 
 TEST(DefinesRun, KeepsWhatTheRunUsedOnly) {

@@ -110,8 +110,8 @@ bad_input(grid_option_for_simulate "--omega-ratio-range = 1 2 is invalid: an opt
           simulate --config ${CFG} --omega-ratio-range 1 2 -o ${OUT})
 
 # Command words and counts.
-bad_input(misspelled_subcommand "'swep' is not a command of rocksweep: one of sweep, merge, simulate, info, design, basin, suite" swep --config ${CFG} -o ${OUT})
-bad_input(no_subcommand "a command is required: one of sweep, merge, simulate, info, design, basin, suite" --config ${CFG})
+bad_input(misspelled_subcommand "'swep' is not a command of rocksweep: one of sweep, merge, simulate, info, design, basin, suite, risk" swep --config ${CFG} -o ${OUT})
+bad_input(no_subcommand "a command is required: one of sweep, merge, simulate, info, design, basin, suite, risk" --config ${CFG})
 bad_input(simulate_option_for_sweep "'--anchorage' is not an option of rocksweep sweep" sweep --config ${CFG} -o ${OUT} --anchorage free)
 bad_input(sweep_pulse_family "--pulse = sine is invalid: not a known word; allowed: one of one-sine, n-sine, cycloidal-a"
           sweep --config ${CFG} -o ${OUT} --pulse sine)

@@ -31,6 +31,15 @@ check "^rocksweep: error: --record-steps = cross is invalid: samples, $tail" --r
 check "^rocksweep: error: --impact-threshold = 0.002 is invalid: 0.001, $tail" --impact-threshold 0.002
 check "^rocksweep: error: --equations = linearised is invalid: nonlinear, $tail" --equations linearised
 check "^rocksweep: error: --pulse = ricker is invalid: one-sine, $tail" --pulse ricker
+# Not only the integrator's: every option the file's /provenance/config records (issue 21). The
+# friction coefficient is stored but no attribute check covers it; the others are each refused
+# with the file named (by the file's own attribute checks where they exist, which speak first).
+check "^rocksweep: error: --friction-coefficient = 0.6 is invalid: 0, $tail" --friction-coefficient 0.6
+for opt in "--mass 3000" "--gravity 9.8" "--restitution 0.8" "--phase 0.5" "--vertical-amplitude 0.1" \
+           "--vertical-phase 1" "--half-height 1.4" "--omega-ratio-range 1 9" "--amplitude-ratio-range 1 20"; do
+  # shellcheck disable=SC2086
+  check "^rocksweep: error: (${opt%% *} = .* is invalid: .*, as $out was computed with|.*$out is invalid: a file written for the same sweep)" $opt
+done
 # The paper's method: its step shapes results; --steps-per-period is then not asked for.
 paper="$dir/paper.h5"
 "$rs" sweep --config "$cfg" "${grid[@]}" --method paper -o "$paper" || fail "paper sweep"
@@ -73,6 +82,7 @@ with h5py.File(sys.argv[1], 'r+') as f:
 err=$("$rs" sweep --config "$cfg" "${grid[@]}" --axis restitution=0.8,0.9 --record-steps cross -o "$before" --resume 2>&1 >/dev/null)
 grep -Eq -- "^rocksweep: error: --record-steps = cross is invalid: samples, as $before" <<<"$err" || fail "old file, record-steps: $err"
 "$rs" sweep --config "$cfg" "${grid[@]}" --axis restitution=0.8,0.9 --refine 8 -o "$before" --resume || fail "old file refused a refinement"
-# Settings that do not change a bit (lanes, chunk) are free to differ.
-"$rs" sweep --config "$cfg" "${grid[@]}" --lanes 4 --chunk 3 -o "$out" --resume || fail "lanes/chunk refused"
+# Settings that do not change a bit (lanes, chunk) are free to differ; a number written otherwise
+# (48.0 for 48) is the same number.
+"$rs" sweep --config "$cfg" "${grid[@]}" --lanes 4 --chunk 3 --steps-per-period 48.0 -o "$out" --resume || fail "lanes/chunk refused"
 echo "ok: $n settings refused"

@@ -15,7 +15,7 @@ mpi=(mpirun --oversubscribe)
 [ "$(id -u)" -eq 0 ] && mpi+=(--allow-run-as-root)
 ref="$dir/ref.h5"
 "$rs" "${args[@]}" -o "$ref"
-h5ls "$ref/suite/free/fragility/median" >/dev/null || { echo "no fragility in a complete suite file"; exit 1; }
+h5ls "$ref/suite/free/fragility/median_intensity" >/dev/null || { echo "no fragility in a complete suite file"; exit 1; }
 for run in "2 1" "2 7" "3 64"; do
   set -- $run
   out="$dir/np$1-chunk$2.h5"

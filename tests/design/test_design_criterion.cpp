@@ -88,3 +88,20 @@ TEST(DesignCriterion, RefusesWhatItCannotJudge) {
     EXPECT_THROW(score_scenario(f.spec, f.r, 0, {}), std::invalid_argument);
     EXPECT_THROW(score_scenario(f.spec, f.r, 2, {}), std::invalid_argument);
 }
+
+TEST(DesignCriterion, PerLevelSharesOfASuiteScenario) {
+    // The fixture's 15 cells of scenario 1 read as 3 records x 5 levels (C order, record slowest).
+    Fixture f;
+    const std::size_t first = f.spec.cells_per_scenario();
+    f.r.outcome[first + 0 * 5 + 4] = 1;                // record 0 overturns at the top level
+    f.r.outcome[first + 2 * 5 + 4] = 255;              // record 2 did not converge there: not safe
+    f.r.max_rotation[first + 1 * 5 + 3] = 0.9;         // record 1 rocks beyond a 0.7 limit at level 3
+    const std::vector<RegionScore> s = score_levels(f.r, first, 3, 5, {0.7, 0.0});
+    ASSERT_EQ(s.size(), 5u);
+    for (std::size_t l = 0; l < 3; ++l) EXPECT_EQ(s[l].acceptable, 1.0);
+    EXPECT_NEAR(s[3].acceptable, 2.0 / 3.0, 1e-15);
+    EXPECT_EQ(s[3].standing, 1.0);
+    EXPECT_NEAR(s[4].standing, 1.0 / 3.0, 1e-15);
+    EXPECT_NEAR(s[4].acceptable, 1.0 / 3.0, 1e-15);
+    EXPECT_THROW(score_levels(f.r, first, 3, 6, {}), std::invalid_argument);  // past the results
+}

@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <memory>
 #include <set>
@@ -14,12 +15,15 @@
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace rocksweep {
 namespace {
 
 // ---- MPI, started the first time a test needs it and finalised after the last test. ----------
+// A session started by hand leaves MPI alone (no launcher), so the environment initialises MPI
+// itself, as a singleton, to test the MPI scheduler on one rank; the session then adopts it.
 
 class MpiEnvironment : public ::testing::Environment {
 public:
@@ -29,15 +33,25 @@ public:
             static char* args[] = {name, nullptr};
             argc_ = 1;
             argv_ = args;
+            int initialized = 0, provided = 0;
+            MPI_Initialized(&initialized);
+            if (!initialized) {
+                MPI_Init_thread(&argc_, &argv_, MPI_THREAD_FUNNELED, &provided);
+                owns_mpi_ = true;
+            }
             session_ = std::make_unique<MpiSession>(argc_, argv_);
         }
         return *session_;
     }
-    void TearDown() override { session_.reset(); }
+    void TearDown() override {
+        session_.reset();
+        if (owns_mpi_) MPI_Finalize();
+    }
 
 private:
     int argc_ = 0;
     char** argv_ = nullptr;
+    bool owns_mpi_ = false;
     std::unique_ptr<MpiSession> session_;
 };
 
@@ -333,15 +347,31 @@ TEST(GuidedChunkSize, ShrinksAsWorkRunsOutWithinBounds) {
 
 // ---- MPI session and root stream. ----------------------------------------------------------------
 
-TEST(MpiSession, SingletonWithoutMpirunIsRankZeroOfOne) {
+TEST(MpiSession, AdoptsAnInitialisedMpiAsRankZeroOfOne) {
     MpiSession& session = mpi_environment->session();
     EXPECT_EQ(session.rank(), 0);
     EXPECT_EQ(session.size(), 1);
     EXPECT_TRUE(session.is_root());
+    EXPECT_TRUE(session.uses_mpi());
     EXPECT_GE(session.thread_level(), MPI_THREAD_SINGLE);
-    int initialized = 0;
-    MPI_Initialized(&initialized);
-    EXPECT_TRUE(initialized);
+}
+
+// The environment variables of each launcher family, one at a time. Open MPI's singleton
+// start-up (the environment above) sets PMIX_RANK in this process: saved, cleared, restored.
+TEST(MpiSession, LauncherIsRecognisedByItsEnvironment) {
+    const char* names[] = {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE"};
+    std::vector<std::pair<std::string, std::string>> saved;
+    for (const char* name : names)
+        if (const char* value = std::getenv(name)) saved.emplace_back(name, value);
+    for (const char* name : names) unsetenv(name);
+    EXPECT_FALSE(launched_by_mpi_launcher());
+    for (const char* name : names) {
+        setenv(name, "1", 1);
+        EXPECT_TRUE(launched_by_mpi_launcher()) << name;
+        unsetenv(name);
+    }
+    EXPECT_FALSE(launched_by_mpi_launcher());
+    for (const auto& [name, value] : saved) setenv(name.c_str(), value.c_str(), 1);
 }
 
 TEST(RootStream, ForwardsWhenActiveAndDiscardsOtherwise) {

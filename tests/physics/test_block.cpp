@@ -65,6 +65,13 @@ TEST(Block, NeedlesAndUnboundedInertiaAreRejected) {
         EXPECT_EQ(e.field(), "block.half_height");
     }
     EXPECT_NO_THROW(rectangular_block(2e-4, 1.0, 1.0));  // alpha = 2e-4 rad: accepted
+    // h / b = 1e4 exactly is the documented limit, accepted however b and h are scaled.
+    for (double b : {1e-3, 3e-3, 7e-3, 1e-2, 0.1}) EXPECT_NO_THROW(rectangular_block(b, 1e4 * b, 1.0)) << b;
+    EXPECT_THROW(rectangular_block(1e-3, 10.001, 1.0), InputError);
+    EXPECT_EQ(min_alpha_rad, std::atan(1.0 / max_height_to_width));
+    EXPECT_NO_THROW(equivalent_block(1.0, min_alpha_rad, 4.0 / 3.0, 1.0));
+    EXPECT_NO_THROW(equivalent_block(1.0, 1e-4, 4.0 / 3.0, 1.0));
+    EXPECT_THROW(equivalent_block(1.0, std::nextafter(min_alpha_rad, 0.0), 4.0 / 3.0, 1.0), InputError);
     // p = 1e-200 rad/s would need I0/(m R^2) = inf: every pulse "too fast", every cell safe.
     EXPECT_THROW(equivalent_block(1.0, 0.2, inertia_ratio_from_p(1e-200, 1.0, 9.81), 1.0), InputError);
     EXPECT_THROW(equivalent_block(1.0, 0.2, 1.0001e4, 1.0), InputError);

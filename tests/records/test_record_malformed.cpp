@@ -153,6 +153,9 @@ TEST(RecordMalformed, ColumnsThatTheFileDoesNotHave) {
     s.vertical = VerticalSource{"", 0};
     EXPECT_EQ(message(s),
               "--record-vertical-column = (missing) is invalid: the column of " + s.path + " holding the vertical component");
+    s.vertical = VerticalSource{"", 2};  // column 0 is the default, 2: one column cannot be both components
+    EXPECT_EQ(message(s), "--record-vertical-column = 2 is invalid: a column other than the horizontal component's (2) of " +
+                              s.path);
     s.vertical = VerticalSource{write_file("v_other_step.dat", "0 0\n0.01 0.1\n0.02 0\n"), 0};
     EXPECT_EQ(message(s), "--record-vertical = " + s.vertical->path +
                               " is invalid: a component on the horizontal's grid (dt 0.02 s from t = 0 s)");

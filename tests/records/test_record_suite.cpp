@@ -93,7 +93,9 @@ TEST(RecordSuite, RowsThatCannotBeReadAreRefusedNamingTheLine) {
     EXPECT_EQ(message(kHeader + "a/b,quake.dat,time_accel,g,\n"),
               at_line(2) + "name 'a/b' must be letters, digits, '_', '-' or '.' (it names the record in the output)");
     EXPECT_EQ(message("name,file,format,units,column\na,quake.dat,time_accel,g,2.5\n"),
-              at_line(2) + "column '2.5' is not a whole number >= 0");
+              at_line(2) + "column '2.5' is not a whole number >= 1");
+    EXPECT_EQ(message("name,file,format,units,column\na,quake.dat,time_accel,g,0\n"),
+              at_line(2) + "column '0' is not a whole number >= 1");  // columns count from 1; empty is the default
     EXPECT_EQ(message(kHeader + "a,quake.dat,time_accel,g\n"), at_line(2) + "4 cells where the header has 5");
     EXPECT_EQ(message(kHeader + "a,quake.dat,time_accel,\"g,\n"),
               at_line(2) + "a quote that is not closed (cells cannot span lines)");

@@ -241,7 +241,7 @@ def write(path, n_radii, partial, measure):
     r = math.hypot(b, h)
     with h5py.File(path, "w") as f:
         attrs(f, {
-            "title": "rocksweep record-suite sweep", "format_version": 2, "kind": "suite",
+            "title": "rocksweep record-suite sweep", "Conventions": "CF-1.8", "format_version": 3, "kind": "suite",
             "half_width_m": b, "half_height_m": h, "radius_m": r, "alpha_rad": ALPHA,
             "p_rad_s": math.sqrt(3 * G / (4 * r)), "e": 1 - 1.5 * math.sin(ALPHA) ** 2, "inertia_ratio": 4.0 / 3.0,
             "mass_kg": 500.0, "gravity_m_s2": G, "intensity_measure": measure, "intensity_units": units,
@@ -365,22 +365,22 @@ def write_fragility(fr, outcome, rot, radii, levels, units, long_name):
     on_alpha(fr, "exceed", exceed, three, "<i4", "1", "records reaching the state")
     on_alpha(fr, "total", total, three, "<i4", "1", "records run (not-converged runs left out)")
     fits = {k: np.full((n_state, len(radii)), np.nan) for k in
-            ("median", "beta", "median_lo", "median_hi", "beta_lo", "beta_hi", "se_ln_median", "se_beta")}
+            ("median_intensity", "beta", "median_intensity_lo", "median_intensity_hi", "beta_lo", "beta_hi", "se_ln_median", "se_beta")}
     status = np.zeros((n_state, len(radii)), np.uint8)
     for s in range(n_state):
         for j in range(len(radii)):
             st, med, beta, se_ln, se_b = fit_stripes(levels, exceed[s, j], total[s, j])
             status[s, j] = FIT_STATUS.index(st)
-            fits["median"][s, j], fits["beta"][s, j] = med, beta
+            fits["median_intensity"][s, j], fits["beta"][s, j] = med, beta
             fits["se_ln_median"][s, j], fits["se_beta"][s, j] = se_ln, se_b
             if st == "ok":
-                fits["median_lo"][s, j] = med * math.exp(-Z95 * se_ln)
-                fits["median_hi"][s, j] = med * math.exp(Z95 * se_ln)
+                fits["median_intensity_lo"][s, j] = med * math.exp(-Z95 * se_ln)
+                fits["median_intensity_hi"][s, j] = med * math.exp(Z95 * se_ln)
                 fits["beta_lo"][s, j] = beta * math.exp(-Z95 * se_b / beta)
                 fits["beta_hi"][s, j] = beta * math.exp(Z95 * se_b / beta)
     two = ["damage_state", "radius_m"]
     for k, v in fits.items():
-        u = units if k.startswith("median") else "1"
+        u = units if k.startswith("median_intensity") else "1"
         on_alpha(fr, k, v, two, "<f8", u, k.replace("_", " "))
     on_alpha(fr, "fit_status", status, two, "u1", extra={
         "flag_values": np.arange(len(FIT_STATUS), dtype=np.uint8), "flag_meanings": " ".join(FIT_STATUS)})

@@ -66,7 +66,7 @@ def test_values(path):
     adaptive = S["scenarios"]["adaptive_rho0.1"]
     check(np.all(np.isnan(adaptive["overturning"]["first_pga_g"][:, 0, 2])), "no 2 m block overturns when adaptive")
     check(adaptive["fragility"]["fit_status_names"][-1, 0, 2] == "none_reached", "so its overturning fit is none_reached")
-    check(np.isnan(read_suite.fragility_curve([0.5], adaptive["fragility"]["median"][-1, 0, 2],
+    check(np.isnan(read_suite.fragility_curve([0.5], adaptive["fragility"]["median_intensity"][-1, 0, 2],
                                               adaptive["fragility"]["beta"][-1, 0, 2])).all(),
           "and it has no curve")
 
@@ -83,15 +83,15 @@ def test_values(path):
         check(np.all((fr["fraction_lo"] <= fr["fraction"] + 1e-12) & (fr["fraction"] <= fr["fraction_hi"] + 1e-12)),
               "{}: fraction inside its Wilson interval".format(name))
         ok = fr["fit_status_names"] == "ok"
-        at_median = [read_suite.fragility_curve([m], m, b)[0] for m, b in zip(fr["median"][ok], fr["beta"][ok])]
+        at_median = [read_suite.fragility_curve([m], m, b)[0] for m, b in zip(fr["median_intensity"][ok], fr["beta"][ok])]
         check(ok.any() and np.allclose(at_median, 0.5), "{}: each ok fit is 0.5 at its median".format(name))
-        check(np.all((fr["median_lo"][ok] < fr["median"][ok]) & (fr["median"][ok] < fr["median_hi"][ok])),
+        check(np.all((fr["median_intensity_lo"][ok] < fr["median_intensity"][ok]) & (fr["median_intensity"][ok] < fr["median_intensity_hi"][ok])),
               "{}: median inside its interval".format(name))
     check(list(read_suite.fragility_curve([0.1, 0.2, 0.3], 0.2, 0.0)) == [0.0, 1.0, 1.0]
           and np.isnan(read_suite.fragility_curve([0.1], math.inf, math.nan)).all(),
           "fragility_curve: a zero-dispersion fit is a step at its median, an infinite median no curve")
     # overturning is most likely for small blocks and free ones: medians in that order
-    med = np.array([S["scenarios"][n]["fragility"]["median"][-1, 0, :2] for n in S["scenarios"]])
+    med = np.array([S["scenarios"][n]["fragility"]["median_intensity"][-1, 0, :2] for n in S["scenarios"]])
     check(np.all(np.diff(med, axis=0) > 0) and np.all(np.diff(med, axis=1) > 0),
           "overturning medians rise with anchorage (free < constant < adaptive) and with R")
 
@@ -116,7 +116,7 @@ for k = 1:numel(names)
     for f = fieldnames(S.overturning)'
         if ~strcmp(f{{1}}, 'units'), X.([p 'ov_' f{{1}}]) = S.overturning.(f{{1}}); end
     end
-    for f = {{'fraction', 'exceed', 'total', 'median', 'beta', 'fit_status', 'rotation_ratios'}}
+    for f = {{'fraction', 'exceed', 'total', 'median_intensity', 'beta', 'fit_status', 'rotation_ratios'}}
         X.([p 'fr_' f{{1}}]) = S.fragility.(f{{1}});
     end
     X.([p 'fr_states']) = strjoin(S.fragility.states', ' ');
@@ -170,7 +170,7 @@ def test_octave(path):
             for ds in read_suite.OVERTURNING:
                 if not same(M[p + "ov_" + ds], g["overturning"][ds][()]):
                     bad.append("overturning/" + ds)
-            for ds in ("fraction", "exceed", "total", "median", "beta", "fit_status"):
+            for ds in ("fraction", "exceed", "total", "median_intensity", "beta", "fit_status"):
                 if not same(M[p + "fr_" + ds], g["fragility"][ds][()]):
                     bad.append("fragility/" + ds)
             if not same(M[p + "fr_rotation_ratios"].ravel(), g["fragility/damage_state"].attrs["rotation_ratios"]):
@@ -196,7 +196,7 @@ def test_xarray(path):
                     ok = (ds.outcome.dims == ("record", "alpha_rad", "radius_m", "intensity")
                           and same(ds.outcome.values, sc["outcome"]) and same(ds.t_overturn.values, sc["t_overturn"])
                           and ds.radius_m.attrs["units"] == "m" and ds.attrs["anchorage"] == sc["attrs"]["anchorage"]
-                          and same(fr["median"].values, sc["fragility"]["median"])
+                          and same(fr["median_intensity"].values, sc["fragility"]["median_intensity"])
                           and fr.damage_state.attrs["flag_meanings"].split() == sc["fragility"]["states"])
             check(ok, "xarray.open_dataset(group='suite/{}', engine='{}'): same arrays and axes".format(name, engine))
     D = read_suite.to_xarray(path)

@@ -26,9 +26,15 @@ struct DesignCommand {
     double max_rotation_ratio = 0.0;      ///< acceptable: max |theta| / alpha at most this; 0: no limit
     double object_force_ratio = 0.0;      ///< the object's own force limit / (m g); 0: none (F_u only)
     double near_optimal = 0.005;          ///< values within this of the best criterion are reported as near-optimal
+    bool keep_rounds = false;             ///< keep OUT.roundN.h5 once the design file is written (default: removed)
     /// --suite and its levels: the hazard is the records of a suite instead of the pulse region
     /// (hazard.suite empty: the region). Its run options are not used.
     SuiteCommand hazard;
+    /// With --suite: a site's hazard curve; the criterion becomes the annual rate of the
+    /// unacceptable state there (app/design_risk.hpp, docs/risk.md). Empty: the share of the runs.
+    std::string hazard_curve;
+    int hazard_site = -1;
+    double exposure_years = 50;
 };
 
 /// The design command's own options (the run options are the sweep's, added by cli.cpp).

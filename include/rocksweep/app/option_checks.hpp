@@ -21,6 +21,10 @@ CLI::Validator integer_of(std::vector<long long> allowed);
 CLI::Validator one_of(std::vector<std::string> allowed);
 /// The name of an existing regular file: not empty, not a directory. `what` names its content.
 CLI::Validator existing_file(const std::string& what);
+/// Notes every file named by an option checked with existing_file (of `app` and of the command
+/// chosen) as an input of the run, which no output may then replace (io/run_inputs.hpp): a new
+/// option naming a file is covered by its validator alone.
+void note_file_inputs(CLI::App& app);
 
 /// Throws InputError for the first of `options` ("--phase", ...) typed on the command line
 /// (`args`, without the program name), with its value(s) and `why` it does not apply: a

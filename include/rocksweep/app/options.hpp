@@ -54,6 +54,7 @@ struct NumericsOptions {
     std::int64_t max_steps = 2'000'000;
     bool no_energy_stop = false;
     std::string record_steps = "samples";  ///< samples: each record sample ends a step; cross
+    bool record_any_pga = false;           ///< accept a record whose PGA as read is implausible (record.hpp)
     int lanes = 8;
 };
 
@@ -91,8 +92,10 @@ IntegratorSettings make_settings(const NumericsOptions& o);
 SweepSpec make_sweep_spec(const Options& o);
 /// How `simulate --record ...` asks for its record to be read (record.hpp).
 RecordSource record_source(const SingleOptions& s);
-/// The single cell of `rocksweep simulate`.
-CellModel make_single_cell(const Options& o);
+/// The single cell of `rocksweep simulate`; its record, if it has one, into `record` (when
+/// given) for the caller to report. A record of implausible PGA is refused (record.hpp) unless
+/// --record-any-pga.
+CellModel make_single_cell(const Options& o, Record* record = nullptr);
 /// Whether the option `name` (a config key: "mass", "omega-ratio") defined the run of `command`
 /// ("sweep" or "simulate") with options `o`, and so belongs in its /provenance/config: not how
 /// the run was started (output, resume, quiet), not what this run ignored (a record-driven

@@ -35,6 +35,12 @@ struct RegionScore {
 RegionScore score_scenario(const SweepSpec& spec, const SweepResults& r, std::size_t scenario,
                            const DesignConstraints& c);
 
+/// Per level of one block of a record suite, whose runs are cells [record, level] from `first`
+/// (C order): the share of the records acceptable and standing at each level, the fragility
+/// that a hazard curve turns into an annual rate (design --hazard, docs/risk.md).
+std::vector<RegionScore> score_levels(const SweepResults& r, std::size_t first, std::size_t records, std::size_t levels,
+                                      const DesignConstraints& c);
+
 /// The same over cells [first, first + count) of `r`, each of equal weight: the share of the
 /// runs of a record suite (every record at every level counts once) that are acceptable.
 RegionScore score_cells(const SweepResults& r, std::size_t first, std::size_t count, const DesignConstraints& c);

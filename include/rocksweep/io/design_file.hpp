@@ -19,6 +19,7 @@ struct DesignCurve {
     std::vector<double> theta_f_ratio;       ///< theta_f / alpha of each constant K (empty for K_min / K_max)
     std::vector<double> acceptable;          ///< the criterion
     std::vector<double> standing;            ///< not overturned, limits ignored
+    std::vector<double> rate, standing_rate; ///< with a hazard curve: the annual rates [1/yr] of the unacceptable state and of overturning (NaN without)
     std::vector<std::int32_t> round;         ///< search round that evaluated it: 0 the coarse one
     std::size_t optimum = 0;                 ///< index of the recommended value (best_point)
     std::size_t near_lo = 0, near_hi = 0;    ///< the run of values around it within DesignReport::near_optimal of its criterion
@@ -31,6 +32,14 @@ struct SuiteHazard {
     std::string units;
     Axis levels;
     std::size_t records = 0;
+};
+
+/// A site's hazard curve as the design's criterion (design --hazard): the safe fraction is then
+/// exp(-rate t), the probability of no unacceptable event in the exposure time t.
+struct RiskHazard {
+    std::string path;
+    std::string measure;  ///< "PGA", ...
+    double exposure_years = 50;
 };
 
 struct DesignReport {
@@ -46,6 +55,8 @@ struct DesignReport {
     double near_optimal = 0.0;         ///< margin of the near-optimal ranges
     std::size_t refine_stride = 0;     ///< boundary refinement of each sweep; 0: every cell computed
     std::optional<SuiteHazard> suite;  ///< set: the hazard is this suite, not hazard's region
+    std::optional<RiskHazard> risk;    ///< set (with suite): the criterion is the annual rate at this site
+    double free_rate = 0.0, free_standing_rate = 0.0;  ///< the free block's rates [1/yr] (NaN without risk)
 };
 
 /// Writes `path` atomically (publish_h5_atomically). Throws std::invalid_argument if a

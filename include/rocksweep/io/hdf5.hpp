@@ -288,6 +288,11 @@ void update_attribute(const Object& obj, std::string_view name, std::int64_t val
 // ---------------------------------------------------------------------------------------
 // Attributes (hdf5_attribute.cpp; scalar unless stated; an existing one of the same name is replaced)
 
+/// The root attribute `Conventions` of every file rocksweep writes: the files give each variable
+/// units and long_name, coded ones flag_values / flag_meanings, and dimension scales as
+/// coordinates, as the CF conventions ask; netCDF tools read the version from here.
+inline constexpr const char* cf_conventions = "CF-1.8";
+
 void write_attribute(const Object& obj, std::string_view name, double value);
 void write_attribute(const Object& obj, std::string_view name, std::int64_t value);
 /// Any other integer is stored as int64 (H5T_STD_I64LE). Throws std::out_of_range if it does

@@ -10,6 +10,7 @@ namespace rocksweep {
 /// The constructor checks everything that would otherwise fail only after computing, and throws
 /// InputError(field, path, allowed) for the first problem found:
 /// - the name: not empty; PATH.tmp and PATH.lock within NAME_MAX and PATH_MAX;
+/// - not an input: PATH is none of the files the run reads (run_inputs.hpp), by identity;
 /// - the place: an existing, writable directory; PATH not a directory or other non-file;
 ///   PATH.tmp, if it exists, a regular file (a directory of that name is refused, never deleted);
 /// - the lock: an exclusive flock(2) on PATH.lock, so that a second run writing the same output

@@ -41,6 +41,19 @@ void write_spectra(const std::string& path, const SweepSpec& spec, const SweepRe
 SweepResults read_spectra_results(const std::string& path, const SweepSpec& spec,
                                   const IntegratorSettings& settings);
 
+/// Compares each scenario's results in `r` (read from `path`) with the checksum the file stored
+/// when its run finished (results_checksum.hpp). Throws InputError("part file", path, ...)
+/// naming the first scenario that differs; returns the names of the scenarios that have none
+/// (a file from before checksums, or a run killed before it finished).
+std::vector<std::string> verify_results_checksums(const std::string& path, const SweepSpec& spec, const SweepResults& r);
+
+/// The checks of read_spectra_results alone, the results left unread.
+void check_spectra_file(const std::string& path, const SweepSpec& spec, const IntegratorSettings& settings);
+
+/// The effective config a results file (spectra or suite) records in /provenance/config, "" if
+/// it records none or cannot be read (its readers report that).
+std::string read_provenance_config(const std::string& path);
+
 /// `spec` with the refinement the spectra file at `path` records (refine_stride, refine_axes):
 /// what a reader that was not told it (merge) takes from its first file, and then checks the
 /// others against. `spec` unchanged if the file records none or is not a spectra file (reading

@@ -19,6 +19,10 @@
 #include "rocksweep/grid/sweep.hpp"
 #include "rocksweep/io/spectra_file.hpp"
 
+namespace rocksweep::h5 {
+class File;
+}
+
 namespace rocksweep {
 
 /// What the checkpoints of a run cost, for the log line and /provenance.
@@ -70,8 +74,9 @@ public:
     /// Writes the cells added since the last checkpoint and syncs them, then the root attribute
     /// n_done; the first one also publishes the file under `path`. Throws std::runtime_error("cannot write PATH: ...").
     void checkpoint();
-    /// A last checkpoint, then the root attributes n_done and complete and /provenance
-    /// (wall_s, ranks, checkpoint cost). Throws like checkpoint().
+    /// A last checkpoint, then the root attributes n_done and complete, /provenance (wall_s,
+    /// ranks, checkpoint cost) and each scenario's checksum of its results (results_checksum.hpp).
+    /// Throws like checkpoint().
     void finish(double wall_s);
 
     const CheckpointStats& stats() const { return stats_; }
@@ -88,6 +93,8 @@ private:
     void publish();
     void count_done();
     void update_counts(bool final, const double* wall_s);
+    void forget_checksums();
+    void store_checksums(const h5::File& f);
 
     std::string path_;
     const SweepSpec& spec_;
@@ -96,6 +103,7 @@ private:
     std::vector<std::vector<Placement>> place_;  // [scenario][column]
     std::unique_ptr<Descriptor> fd_;
     bool published_ = false;
+    bool checksums_forgotten_ = false;  // the file's checksums are 0 until finish() stores them
     std::size_t done_count_ = 0;
     std::vector<std::size_t> pending_index_;
     std::vector<CellResult> pending_cells_;

@@ -11,6 +11,11 @@
 
 namespace rocksweep {
 
+/// Throws InputError("suite", "SUITE line N", ...) for the first record whose name cannot name
+/// its group /records/NAME: "." or "..", or a dataset of /records (pga_g, record, intensity, ...).
+/// Checked before any work, and again by write_suite.
+void check_record_names(const SuiteSpec& spec);
+
 /// Writes the whole file to path + ".tmp", closes it and renames it onto `path` (as
 /// write_spectra). `r` may be partial; the products are written only when every cell is done.
 /// Throws as write_spectra.

@@ -13,8 +13,10 @@
 namespace rocksweep {
 
 /// Initialises MPI on construction and finalises it on destruction (RAII, one per program,
-/// made first thing in `main`). Works without mpirun: Open MPI then starts a singleton job of
-/// one rank. Asks for MPI_THREAD_FUNNELED; only the main thread ever calls MPI.
+/// made first thing in `main`), but only in a process started by a launcher (mpirun, srun,
+/// mpiexec: see launched_by_mpi_launcher). A process started on its own is rank 0 of 1 and
+/// never touches MPI: Open MPI's singleton start-up (its orted helper) costs ~0.3 s, which
+/// every `--help` would pay. Asks for MPI_THREAD_FUNNELED; only the main thread ever calls MPI.
 ///
 /// If MPI was already initialised by someone else the session neither initialises nor
 /// finalises it. Throws std::runtime_error if MPI_Init_thread reports failure.
@@ -33,12 +35,16 @@ public:
     bool is_root() const noexcept { return rank_ == 0; }
     /// The thread support level MPI granted (MPI_THREAD_SINGLE ... MPI_THREAD_MULTIPLE).
     int thread_level() const noexcept { return thread_level_; }
+    /// True when MPI is initialised (by this session or before it); false in a process that
+    /// was started on its own, where no MPI function may be called.
+    bool uses_mpi() const noexcept { return uses_mpi_; }
+    /// MPI_COMM_WORLD; only meaningful when uses_mpi().
     MPI_Comm comm() const noexcept { return MPI_COMM_WORLD; }
     /// Rank 0's `value` on every rank (collective; nothing is sent on a job of one rank).
     void broadcast(int& value) const;
     /// Rank 0's `values` (its length too) on every rank.
     void broadcast(std::vector<double>& values) const;
-    /// Seconds on a wall clock (MPI_Wtime): differences between two calls on one rank are meaningful.
+    /// Seconds on a monotonic wall clock: differences between two calls on one rank are meaningful.
     static double wall_time() noexcept;
     /// Ends every rank of the job with exit status `code` (MPI_Abort on MPI_COMM_WORLD).
     [[noreturn]] void abort(int code) const noexcept;
@@ -48,7 +54,14 @@ private:
     int size_ = 1;
     int thread_level_ = MPI_THREAD_SINGLE;
     bool owns_mpi_ = false;
+    bool uses_mpi_ = false;
 };
+
+/// True when the environment says this process is one rank of a job started by a launcher:
+/// Open MPI's mpirun (OMPI_COMM_WORLD_SIZE), a PMIx launcher such as srun --mpi=pmix or
+/// prterun (PMIX_RANK), or a PMI-1/2 launcher such as MPICH's Hydra or srun --mpi=pmi2
+/// (PMI_RANK, PMI_SIZE). A process started by hand has none of these.
+bool launched_by_mpi_launcher() noexcept;
 
 /// For an error local to one rank, which would leave the others blocked: prints
 /// "ERROR on rank N: <what>" to stderr, flushes, and aborts the whole job with MPI_Abort(comm, 1).

@@ -100,6 +100,11 @@ std::unique_ptr<Scheduler> make_serial_scheduler();
 /// Throws std::logic_error if MPI is not initialised.
 std::unique_ptr<Scheduler> make_mpi_scheduler(MPI_Comm comm = MPI_COMM_WORLD);
 
+class MpiSession;
+/// The session's scheduler: the MPI one over its world when it uses MPI, else the serial one.
+/// Both run a job of one rank through the same serial loop, hence the same results.
+std::unique_ptr<Scheduler> make_scheduler(const MpiSession& session);
+
 /// The guided chunk size for `remaining` cells shared among `computing_ranks`:
 /// remaining / (guided_divisor * computing_ranks), rounded up, clamped to [min_chunk, max_chunk].
 std::size_t guided_chunk_size(std::size_t remaining, std::size_t computing_ranks,

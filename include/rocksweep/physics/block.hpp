@@ -20,9 +20,12 @@ struct Block {
     double housner_e() const;       ///< 1 - 2 sin^2(alpha) / inertia_ratio (Eq. 14)
 };
 
-/// Below this slenderness angle (h/b > 1e4, a needle) the uplift threshold and the settling
+/// Above this height-to-width ratio h/b (a needle) the uplift threshold and the settling
 /// speed, both proportional to alpha, approach the rounding of theta: refused, not integrated.
-inline constexpr double min_alpha_rad = 1e-4;
+inline constexpr double max_height_to_width = 1e4;
+/// The same bound as a slenderness angle, atan(1 / max_height_to_width) = atan(1e-4), which
+/// differs from 1e-4 in its ninth digit (a bound of exactly 1e-4 refused h/b = 1e4 itself).
+inline constexpr double min_alpha_rad = 9.999999966666667e-05;
 /// I0/(m R^2) above this puts nearly all the mass far outside the block's outline; it also
 /// keeps p = sqrt(g / (ratio R)) away from 0, where every pulse would look infinitely fast.
 inline constexpr double max_inertia_ratio = 1e4;

@@ -22,6 +22,12 @@ inline constexpr double standard_gravity = 9.80665;
 inline constexpr double record_dt_min_s = 1e-5;
 inline constexpr double record_dt_max_s = 1.0;
 inline constexpr double record_accel_max_g = 20.0;
+/// The peak ground acceleration a strong-motion record has, as read in the unit given and before
+/// any scale factor: a record outside it read in the wrong unit (El Centro's 0.35 g read as
+/// cm/s^2 is 0.00036 g, and reads as "safe"). docs/records.md says why these bounds; a run that
+/// means it accepts such a record with --record-any-pga.
+inline constexpr double record_pga_min_g = 0.005;
+inline constexpr double record_pga_max_g = 5.0;
 
 enum class RecordFormat {
     time_accel,  ///< a time column [s] (column 1), then acceleration column(s)
@@ -77,6 +83,19 @@ struct Record {
 
     double duration_s() const { return static_cast<double>(ax_g.size() - 1) * dt_s; }
 };
+
+/// The horizontal component's peak |a| in the file's unit as given, before the scale factor, in
+/// standard g.
+double pga_as_read_g(const Record& r);
+/// Whether pga_as_read_g lies in [record_pga_min_g, record_pga_max_g].
+bool plausible_pga(const Record& r);
+/// What a run prints of a record before using it: "PGA 0.349 g (3.42 m/s^2) as read in g,
+/// dt 0.02 s, 53.74 s, 2688 samples".
+std::string record_facts(const Record& r);
+/// Why a record with an implausible PGA is refused ("its peak ground acceleration as read in
+/// cm/s^2, ... is ... g, outside ..."): the unit given, the PGA it implies and the band;
+/// `accept` says how to accept it deliberately.
+std::string implausible_pga(const Record& r, const std::string& accept);
 
 /// Reads a record. Throws InputError naming the file and line and what was expected for a
 /// malformed file (non-increasing or uneven times, ragged columns, text in a number, too few

@@ -34,4 +34,9 @@ struct RecordSuite {
 /// (read_record does, with its own checks). Throws InputError("suite", "PATH line N", ...).
 RecordSuite read_record_suite(const std::string& path);
 
+/// read_record of one line of `suite`, its errors told in the suite file's terms: an InputError
+/// of read_record (named after simulate's options, "record-units") is thrown again as
+/// InputError("suite", "PATH line N", "column 'units' = VALUE: ...").
+Record read_suite_record(const RecordSuite& suite, const SuiteRecord& entry);
+
 }  // namespace rocksweep

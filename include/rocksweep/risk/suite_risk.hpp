@@ -1,0 +1,61 @@
+#pragma once
+/// The risk of every anchorage scenario, block and damage state of a finished record suite at
+/// one site: the suite's fragility (fit and empirical fractions, as the suite file holds them)
+/// integrated over the site's hazard curve (docs/risk.md). Pure math: the io layer reads the
+/// suite file into a SuiteFragilityTable and writes the SuiteRisk.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "rocksweep/risk/hazard_curve.hpp"
+
+namespace rocksweep {
+
+/// One scenario's fragility, in the suite file's C order.
+struct ScenarioFragility {
+    std::string name;
+    std::vector<double> fraction, fraction_lo, fraction_hi;  ///< [state, alpha, radius, level]
+    std::vector<double> median, beta, median_lo, median_hi, beta_lo, beta_hi;  ///< [state, alpha, radius]
+    std::vector<std::uint8_t> fit_status;                     ///< FitStatus codes, [state, alpha, radius]
+};
+
+struct SuiteFragilityTable {
+    std::string measure;  ///< the suite's intensity_measure: "pga_g", "pgv_m_s", ...
+    double period_s = 0;  ///< of a spectral measure; 0 otherwise
+    std::vector<std::string> states;
+    std::vector<double> alphas, radii, levels;
+    std::vector<ScenarioFragility> scenarios;
+    std::size_t blocks() const { return states.size() * alphas.size() * radii.size(); }
+};
+
+/// Throws InputError("hazard", ...) unless the hazard curve's measure is the suite's: PGA for
+/// pga_g, PGV for pgv_m_s, SA(T) for a spectral suite measure "sa_g" of the same period (to
+/// 1e-6 relative). A suite scaled by pga_ratio or scale has no hazard curve.
+void check_same_measure(const HazardCurve& h, const std::string& hazard_path, const SuiteFragilityTable& t);
+
+struct ScenarioRisk {
+    std::string name;
+    /// [state, alpha, radius]: lambda [1/yr] from the lognormal fit, its interval (the lowest
+    /// and highest lambda over the corners of the box of the median's and beta's 95 %
+    /// intervals), the parts from below / above the hazard curve's points; NaN where the fit
+    /// status is neither ok nor zero_dispersion.
+    std::vector<double> rate_fit, rate_fit_lo, rate_fit_hi, below_fit, above_fit;
+    /// The same from the empirical fractions (P linear in ln x between levels, 0 below the
+    /// first, the last held above), the interval from Wilson's bounds of every fraction.
+    std::vector<double> rate_empirical, rate_empirical_lo, rate_empirical_hi, below_empirical, above_empirical;
+    /// [state, alpha, radius, deaggregation point]: d lambda / d ln x.
+    std::vector<double> density_fit, density_empirical;
+};
+
+struct SuiteRisk {
+    std::vector<double> deaggregation_intensity;  ///< where the densities are given
+    std::vector<ScenarioRisk> scenarios;
+};
+
+/// The deaggregation grid: `points` log-spaced from a quarter of the lowest hazard point or
+/// suite level to four times the highest.
+std::vector<double> deaggregation_grid(const HazardCurve& h, const std::vector<double>& levels, std::size_t points = 121);
+
+SuiteRisk suite_risk(const HazardCurve& h, const SuiteFragilityTable& t);
+
+}  // namespace rocksweep

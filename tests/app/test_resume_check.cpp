@@ -1,0 +1,60 @@
+// check_resumed_config: the option-by-option comparison --resume makes between a file's
+// /provenance/config and the resuming run's effective config (resume_check.hpp).
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "rocksweep/app/resume_check.hpp"
+#include "rocksweep/core/errors.hpp"
+
+using namespace rocksweep;
+
+namespace {
+
+const std::string kStored =
+    "mass = 3361.0\nfriction-coefficient = 0.5\nanchorages = [\"free\", \"constant\"]\nmethod = \"events\"\n"
+    "lanes = 8\nsweep.chunk = 512\nsweep.pulse = \"one-sine\"\nmerge.parts = [\"p1.h5\", \"p2.h5\"]\n";
+
+/// The message check_resumed_config throws for `now`, or "" if it accepts it.
+std::string refusal(const std::string& now, const std::string& stored = kStored) {
+    try {
+        check_resumed_config("f.h5", stored, now);
+    } catch (const InputError& e) {
+        return cli_message(e);
+    }
+    return "";
+}
+
+}  // namespace
+
+TEST(ResumeCheck, TheSameOptionsResume) {
+    EXPECT_EQ(refusal(kStored), "");
+    // Numbers compare as numbers; a command's table is not part of the option; what changes no
+    // result (lanes, chunk) and merge's parts may differ or be absent.
+    EXPECT_EQ(refusal("mass = 3361\nfriction-coefficient = 5e-1\nanchorages = [\"free\", \"constant\"]\n"
+                      "method = \"events\"\nlanes = 4\nmerge.pulse = \"one-sine\"\n"),
+              "");
+}
+
+TEST(ResumeCheck, AnotherValueIsRefusedNamingBoth) {
+    const std::string tail = ", as f.h5 was computed with (--resume continues a file only with the settings that shaped its results)";
+    EXPECT_EQ(refusal("mass = 3361\nfriction-coefficient = 0.6\nanchorages = [\"free\", \"constant\"]\nmethod = \"events\"\n"
+                      "sweep.pulse = \"one-sine\"\n"),
+              "--friction-coefficient = 0.6 is invalid: 0.5" + tail);
+    EXPECT_EQ(refusal("mass = 3361\nfriction-coefficient = 0.5\nanchorages = [\"free\"]\nmethod = \"events\"\n"
+                      "sweep.pulse = \"one-sine\"\n"),
+              "--anchorages = free is invalid: free constant" + tail);
+    EXPECT_EQ(refusal("mass = 3361\nfriction-coefficient = 0.5\nanchorages = [\"free\", \"constant\"]\nmethod = \"events\"\n"
+                      "sweep.pulse = \"ricker\"\n"),
+              "--pulse = ricker is invalid: one-sine" + tail);
+}
+
+TEST(ResumeCheck, AnOptionInOneConfigOnlyIsNotGivenInTheOther) {
+    const std::string tail = ", as f.h5 was computed with (--resume continues a file only with the settings that shaped its results)";
+    EXPECT_EQ(refusal(kStored + "no-energy-stop = true\n"), "--no-energy-stop = given is invalid: not given" + tail);
+    EXPECT_EQ(refusal("friction-coefficient = 0.5\nanchorages = [\"free\", \"constant\"]\nmethod = \"events\"\n"
+                      "sweep.pulse = \"one-sine\"\n"),
+              "--mass = not given is invalid: 3361.0" + tail);
+}
+
+TEST(ResumeCheck, AFileWithoutAConfigIsNotChecked) { EXPECT_EQ(refusal("mass = 1\n", ""), ""); }
