@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "rocksweep/core/errors.hpp"
+#include "rocksweep/records/fragility.hpp"
 
 namespace rocksweep::io {
 
@@ -209,6 +210,18 @@ h5::Group write_provenance(const h5::File& f, const Provenance& prov, const Inte
     h5::write_attribute(g, "ranks", prov.ranks);
     h5::write_attribute(g, "wall_s", prov.wall_s);
     return g;
+}
+
+void write_fit_status_flags(const h5::Dataset& ds, const std::string& long_name) {
+    std::vector<std::uint8_t> codes;
+    std::string names;
+    for (auto s = FitStatus::ok; s <= FitStatus::decreasing; s = static_cast<FitStatus>(static_cast<int>(s) + 1)) {
+        codes.push_back(static_cast<std::uint8_t>(s));
+        names += (names.empty() ? "" : " ") + to_string(s);
+    }
+    h5::write_attribute(ds, "long_name", long_name);
+    h5::write_attribute(ds, "flag_values", std::span<const std::uint8_t>(codes));
+    h5::write_attribute(ds, "flag_meanings", names);
 }
 
 void write_progress(const h5::Object& obj, const SweepResults& r) {
