@@ -45,7 +45,8 @@ SuiteFragilityTable read_table(const h5::File& f, const std::string& path) {
         s.name = name;
         const auto read = [&](const char* n) { return h5::read_array<double>(fr, n).values; };
         s.fraction = read("fraction"), s.fraction_lo = read("fraction_lo"), s.fraction_hi = read("fraction_hi");
-        s.median = read("median"), s.beta = read("beta"), s.median_lo = read("median_lo"), s.median_hi = read("median_hi");
+        s.median = read("median_intensity"), s.beta = read("beta");
+        s.median_lo = read("median_intensity_lo"), s.median_hi = read("median_intensity_hi");
         s.beta_lo = read("beta_lo"), s.beta_hi = read("beta_hi");
         s.fit_status = h5::read_array<std::uint8_t>(fr, "fit_status").values;
         const std::size_t blocks = t.blocks();
