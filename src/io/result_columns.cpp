@@ -199,16 +199,21 @@ void read_result_columns(const h5::Group& g, std::span<const GridAxis> axes, Swe
     read_column(g, "done", axes, r.done, first, mismatch);
 }
 
-h5::Group write_provenance(const h5::File& f, const Provenance& prov, const IntegratorSettings& settings) {
+h5::Group write_provenance(const h5::File& f, const Provenance& prov) {
     h5::Group g = f.create_group("provenance");
     h5::write_attribute(g, "version", prov.version);
     h5::write_attribute(g, "config", prov.config_text);
+    h5::write_attribute(g, "created_utc", prov.created_utc);
+    h5::write_attribute(g, "wall_s", prov.wall_s);
+    return g;
+}
+
+h5::Group write_provenance(const h5::File& f, const Provenance& prov, const IntegratorSettings& settings) {
+    h5::Group g = write_provenance(f, prov);
     h5::write_attribute(g, "method", to_string(settings.method));
     h5::write_attribute(g, "steps_per_period", settings.steps_per_period);
     h5::write_attribute(g, "paper_dt_s", settings.paper_dt_s);
-    h5::write_attribute(g, "created_utc", prov.created_utc);
     h5::write_attribute(g, "ranks", prov.ranks);
-    h5::write_attribute(g, "wall_s", prov.wall_s);
     return g;
 }
 

@@ -65,8 +65,11 @@ void write_result_columns(const GridGroup& grid, const SweepResults& r, std::siz
 void read_result_columns(const h5::Group& g, std::span<const GridAxis> axes, SweepResults& r, std::size_t first,
                          const Mismatch& mismatch);
 
-/// /provenance: what produced the file (everything there may differ between two runs); returns
-/// the group, for a writer's own additions.
+/// /provenance: what produced the file (everything there may differ between two runs): version,
+/// config, created_utc, wall_s; returns the group, for a writer's own additions (ranks, where
+/// the run had them). Every file rocksweep writes but the basin's has it.
+h5::Group write_provenance(const h5::File& f, const Provenance& prov);
+/// The same with the ranks and the numerical settings, for a file of sweep results.
 h5::Group write_provenance(const h5::File& f, const Provenance& prov, const IntegratorSettings& settings);
 
 /// A dataset of FitStatus codes (the suite file's fit_status, and the risk file's copy of it):

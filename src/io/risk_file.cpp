@@ -166,11 +166,7 @@ void write_contents(const h5::File& f, const RiskReport& r, const Provenance& pr
     write_hazard(f, r);
     const h5::Group risk = f.create_group("risk");
     for (std::size_t s = 0; s < r.risk.scenarios.size(); ++s) write_scenario(risk, r, r.fragility.scenarios[s], r.risk.scenarios[s]);
-    const h5::Group p = f.create_group("provenance");
-    h5::write_attribute(p, "version", prov.version);
-    h5::write_attribute(p, "config", prov.config_text);
-    h5::write_attribute(p, "created_utc", prov.created_utc);
-    h5::write_attribute(p, "wall_s", prov.wall_s);
+    io::write_provenance(f, prov);  // no ranks: risk runs on one process
 }
 
 }  // namespace
