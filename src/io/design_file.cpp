@@ -4,6 +4,7 @@
 #include <span>
 #include <stdexcept>
 
+#include "result_columns.hpp"
 #include "rocksweep/io/hdf5.hpp"
 
 namespace rocksweep {
@@ -148,12 +149,7 @@ void write_contents(const h5::File& f, const DesignReport& r, const Provenance& 
         h5::write_attribute(g, "optimum_k_min_N_per_m", c.variable[c.optimum] * r.k_max_n_per_m);
         write_search(g, r.kmin_search, "kmin_ratio_range");
     }
-    const h5::Group g = f.create_group("provenance");
-    h5::write_attribute(g, "version", prov.version);
-    h5::write_attribute(g, "config", prov.config_text);
-    h5::write_attribute(g, "created_utc", prov.created_utc);
-    h5::write_attribute(g, "ranks", prov.ranks);
-    h5::write_attribute(g, "wall_s", prov.wall_s);
+    h5::write_attribute(io::write_provenance(f, prov), "ranks", prov.ranks);
 }
 
 }  // namespace

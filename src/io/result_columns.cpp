@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "rocksweep/core/errors.hpp"
+#include "rocksweep/records/fragility.hpp"
 
 namespace rocksweep::io {
 
@@ -198,17 +199,34 @@ void read_result_columns(const h5::Group& g, std::span<const GridAxis> axes, Swe
     read_column(g, "done", axes, r.done, first, mismatch);
 }
 
-h5::Group write_provenance(const h5::File& f, const Provenance& prov, const IntegratorSettings& settings) {
+h5::Group write_provenance(const h5::File& f, const Provenance& prov) {
     h5::Group g = f.create_group("provenance");
     h5::write_attribute(g, "version", prov.version);
     h5::write_attribute(g, "config", prov.config_text);
+    h5::write_attribute(g, "created_utc", prov.created_utc);
+    h5::write_attribute(g, "wall_s", prov.wall_s);
+    return g;
+}
+
+h5::Group write_provenance(const h5::File& f, const Provenance& prov, const IntegratorSettings& settings) {
+    h5::Group g = write_provenance(f, prov);
     h5::write_attribute(g, "method", to_string(settings.method));
     h5::write_attribute(g, "steps_per_period", settings.steps_per_period);
     h5::write_attribute(g, "paper_dt_s", settings.paper_dt_s);
-    h5::write_attribute(g, "created_utc", prov.created_utc);
     h5::write_attribute(g, "ranks", prov.ranks);
-    h5::write_attribute(g, "wall_s", prov.wall_s);
     return g;
+}
+
+void write_fit_status_flags(const h5::Dataset& ds, const std::string& long_name) {
+    std::vector<std::uint8_t> codes;
+    std::string names;
+    for (auto s = FitStatus::ok; s <= FitStatus::decreasing; s = static_cast<FitStatus>(static_cast<int>(s) + 1)) {
+        codes.push_back(static_cast<std::uint8_t>(s));
+        names += (names.empty() ? "" : " ") + to_string(s);
+    }
+    h5::write_attribute(ds, "long_name", long_name);
+    h5::write_attribute(ds, "flag_values", std::span<const std::uint8_t>(codes));
+    h5::write_attribute(ds, "flag_meanings", names);
 }
 
 void write_progress(const h5::Object& obj, const SweepResults& r) {
