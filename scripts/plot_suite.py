@@ -12,7 +12,8 @@ OUT_overturning.png/.pdf  first overturning PGA [g] of each record against the b
                           against the slenderness alpha when the file holds several alphas and
                           one R;
                           open markers: records that stand again at some higher level
-                          (safe_above = 1); triangles at the top: records that never overturn.
+                          (safe_above = 1); a grey triangle at the top level with the number
+                          of records that never overturn at that size.
                           With a single R: each record's first overturning PGA against its
                           name, the bar reaching down to the PGA of the level below it.
 OUT_ida.png/.pdf          IDA curves at one R (--radius, default the configured block's): theta_max/alpha
