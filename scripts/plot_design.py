@@ -57,7 +57,7 @@ def draw_curve(ax, x, curve, a, colour, unit):
     """Dots, line, near-optimal band, optimum star and free reference of one curve."""
     y = curve["safe_fraction"]
     shown = [y, [a["free_safe_fraction"]]]
-    coarse = curve["round"] == 0
+    coarse = curve["search_round" if "search_round" in curve else "round"] == 0  # "round" before format 2
     ax.plot(x, y, color=colour, lw=1.2, zorder=2)
     ax.plot(x[coarse], y[coarse], "o", mfc="white", mec=colour, ms=6, zorder=3, label="coarse round")
     ax.plot(x[~coarse], y[~coarse], "o", color=colour, ms=4, zorder=3, label="refinement rounds")

@@ -210,6 +210,15 @@ class Suite(Review):
 
 
 class Design(Review):
+    def test_no_variable_named_like_a_numpy_or_xarray_method(self):
+        import xarray as xr
+        taken = set(dir(xr.Dataset)) | set(dir(xr.DataArray)) | set(dir(np.ndarray))
+        names = set()
+        with h5py.File(DESIGN, "r") as f:
+            f.visit(lambda n: names.add(n.rsplit("/", 1)[-1]))
+        self.assertIn("search_round", names)
+        self.assertEqual(sorted(names & taken), [])
+
     def test_panels_share_one_y_range_and_the_top_is_clear(self):
         (fig,) = drawn(plot_design.plot, plot_design.load(DESIGN), "unused")
         self.review(fig)
