@@ -102,8 +102,8 @@ def plot(data, out):
                              squeeze=False)
     for ax, s in zip(axes.flat, data["scenarios"]):
         panel(ax, data, s)
-        ax.set_xlabel(r"initial $\theta / \alpha$")
-        ax.set_ylabel(r"initial $\dot\theta / p$")
+        ax.set_xlabel(r"initial $\theta / \alpha$ [–]")
+        ax.set_ylabel(r"initial $\dot\theta / p$ [–]")
     for ax in axes.flat[n:]:
         ax.axis("off")
     present = set(np.unique(np.concatenate([s["outcome"].ravel() for s in data["scenarios"]])))

@@ -17,6 +17,7 @@ import sys
 
 import h5py
 import numpy as np
+from matplotlib.ticker import NullLocator
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import rsplot  # noqa: E402
@@ -110,6 +111,7 @@ def plot(D, out):
     sec.set_xticks(ticks, labels=["{:g}".format(t) for t in ticks])
     sec.set_xlabel(r"fracture angle $\theta_f / \alpha$ at $F_u$", fontsize=9)
     sec.tick_params(labelsize=8)
+    sec.xaxis.set_minor_locator(NullLocator())  # minor ticks of a log axis crowd the top of the panel
 
     paper_r = [v for v in PAPER_KMIN if rho.min() <= v <= rho.max()]
     mark_paper(ax_r, paper_r, ["paper: {:g}".format(v) for v in paper_r])

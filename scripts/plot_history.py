@@ -112,10 +112,10 @@ def plot(runs, out, title=None):
                                         label=r"overturning: drawn until $|\theta|$ = {:g} $\alpha$".format(THETA_SHOWN))[0])
 
     if "ground" in ax:
-        ax["ground"].set_ylabel(r"$\ddot x_g / g$")
+        ax["ground"].set_ylabel(r"$\ddot x_g / g$ [–]")
         ax["ground"].axhline(0, color="0.5", lw=0.6)
     if by_alpha:
-        ax["theta"].set_ylabel(r"$\theta / \alpha$")
+        ax["theta"].set_ylabel(r"$\theta / \alpha$ [–]")
         for level in (-1, 1):
             ax["theta"].axhline(level, color="0.4", lw=0.7, ls=":")
         lo, hi = ax["theta"].get_ylim()
@@ -127,7 +127,7 @@ def plot(runs, out, title=None):
         ax["theta_dot"].set_ylim(-1.1 * peak_rate, 1.1 * peak_rate)  # everything drawn stays inside
     for side, words in (("k_left", "left"), ("k_right", "right")):
         if side in ax:
-            ax[side].set_ylabel(r"$K_{{{}}} / K_{{max}}$".format(words))
+            ax[side].set_ylabel(r"$K_{{{}}} / K_{{max}}$ [–]".format(words))
             ax[side].set_ylim(-0.08, 1.12)
             ax[side].set_yticks([0, 0.5, 1])
     if "work" in ax:

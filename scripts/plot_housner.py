@@ -98,7 +98,7 @@ def plot(runs, out):
         ax.set_xlabel("t [s]")
         ax.set_title("held {:.4f} s: {}".format(duration, run.outcome_words() or "?"))
         ax.legend(loc="upper right", fontsize=8)
-    axes[0][0].set_ylabel(r"$\theta / \alpha$")
+    axes[0][0].set_ylabel(r"$\theta / \alpha$ [–]")
     head = runs[0].block_words()
     fig.suptitle("Housner's constant ground acceleration (paper's Fig. 3)\nblock " + head, fontsize=11)
     if len({A for A, _ in pulses}) > 1:

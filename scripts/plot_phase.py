@@ -60,7 +60,7 @@ def plot(runs, out, title=None):
         for level in (-1, 1):
             ax.axvline(level, color="0.4", lw=0.7, ls=":")
         ax.set_xlim(-1.06 * THETA_LIMIT, 1.06 * THETA_LIMIT)
-        ax.set_xlabel(r"$\theta / \alpha$")
+        ax.set_xlabel(r"$\theta / \alpha$ [–]")
     else:
         ax.set_xlabel(r"$\theta$ [rad]")
     ax.axhline(0, color="0.5", lw=0.6)

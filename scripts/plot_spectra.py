@@ -67,8 +67,8 @@ FIELDS = {
 
 
 # The spectrum's two axes: the paper's ratios, or the pulse's own period and peak.
-AXIS_LABELS = {"omega_ratio": r"$\omega_p / p$", "period_s": r"pulse period $T_p$ [s]",
-               "amplitude_ratio": r"$a_{p0} / (\alpha g)$", "pga_g": r"PGA $a_{p0}$ [g]"}
+AXIS_LABELS = {"omega_ratio": r"$\omega_p / p$ [–]", "period_s": r"pulse period $T_p$ [s]",
+               "amplitude_ratio": r"$a_{p0} / (\alpha g)$ [–]", "pga_g": r"PGA $a_{p0}$ [g]"}
 
 
 class Layers:

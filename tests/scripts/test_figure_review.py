@@ -87,8 +87,16 @@ class Review(unittest.TestCase):
                 labels = [t.get_text() for t in legend.get_texts()]
                 self.assertEqual(len(labels), len(set(labels)), labels)
 
+    def assertUnits(self, fig):
+        """Every axis label names its unit, [–] for a ratio; a list of names needs none."""
+        for ax in fig.axes:
+            for label in (ax.get_xlabel(), ax.get_ylabel()):
+                if label and label != "record":
+                    self.assertRegex(label, r"\[.+\]", ax.get_title())
+
     def review(self, fig):
         self.assertInside(fig)
+        self.assertUnits(fig)
         self.assertPalette(fig)
         self.assertLegendDistinct(fig)
 
