@@ -69,7 +69,7 @@ def draw_curve(ax, x, curve, a, colour, unit):
     ax.axvspan(lo, hi, color=colour, alpha=0.12, lw=0,
                label="within {:g} of the best".format(a.get("near_optimal", 0)))
     i = int(curve["attrs"]["optimum_index"])
-    ax.plot(x[i], y[i], "*", color="#D55E00", ms=16, mec="k", mew=0.6, zorder=4,
+    ax.plot(x[i], y[i], "*", color=rsplot.OKABE_ITO["vermillion"], ms=16, mec="k", mew=0.6, zorder=4,
             label="best: {} → {:.3f}".format(unit(x[i]), y[i]))
     free = a["free_safe_fraction"]
     ax.axhline(free, color="k", ls="--", lw=1.0, label="free-standing: {:.3f}".format(free))

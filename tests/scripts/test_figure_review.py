@@ -101,6 +101,19 @@ class Review(unittest.TestCase):
         self.assertLegendDistinct(fig)
 
 
+class Palette(unittest.TestCase):
+    def test_every_colour_written_in_the_scripts_is_okabe_ito_or_grey(self):
+        import re
+        scripts = os.path.join(HERE, "..", "..", "scripts")
+        for name in sorted(os.listdir(scripts)):
+            if name.endswith(".py"):
+                with open(os.path.join(scripts, name)) as fh:
+                    for colour in re.findall(r"#[0-9a-fA-F]{6}\b", fh.read()):
+                        r, g, b = (int(colour[k:k + 2], 16) for k in (1, 3, 5))
+                        self.assertTrue(r == g == b or colour.lower() in PALETTE or name == "rsplot.py",
+                                        "{}: {}".format(name, colour))
+
+
 class Histories(Review):
     def test_laws_told_apart_and_csv_drawn_over_alpha(self):
         runs = histories("free.h5", "constant.csv", "adaptive.h5", "passive.h5")
@@ -242,5 +255,5 @@ if __name__ == "__main__":
         pass  # a missing input fails here, not as a skip
     sys.argv[1:] = []
     result = unittest.TextTestRunner(verbosity=2).run(unittest.TestSuite(
-        unittest.defaultTestLoader.loadTestsFromTestCase(c) for c in (Histories, Spectra, Suite, Design)))
+        unittest.defaultTestLoader.loadTestsFromTestCase(c) for c in (Palette, Histories, Spectra, Suite, Design)))
     sys.exit(0 if result.wasSuccessful() and result.testsRun > 0 else 1)
