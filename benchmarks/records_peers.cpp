@@ -47,6 +47,7 @@ struct Setting {
     double impact_threshold;
     bool timed;               ///< false: only histories (the reference pair)
     bool steps_end_at_samples = true;  ///< events: every record sample ends a step (else they cross)
+    double tolerance = 0.0;  ///< events: > 0, steps chosen from the error (IntegratorSettings::tolerance)
 };
 
 // The reference pair: two tight settings that differ in both knobs and in how a step meets the
@@ -61,6 +62,9 @@ const std::vector<Setting> kSettings = {
     {"events48_cross", Method::events, 48, 1e-3, true, false},
     {"events96_cross", Method::events, 96, 1e-3, true, false},
     {"events384", Method::events, 384, 1e-4, true, true},
+    // Error-controlled steps (issue 22): the sweep's default and simulate's.
+    {"tol1e-6", Method::events, 48, 1e-3, true, true, 1e-6},
+    {"tol1e-9", Method::events, 384, 1e-4, true, true, 1e-9},
     {"paper", Method::paper, 0, 1e-3, true},
 };
 
@@ -130,6 +134,7 @@ IntegratorSettings integrator(const Setting& s) {
     is.method = s.method;
     if (s.method == Method::events) is.steps_per_period = s.steps_per_period;
     is.steps_end_at_samples = s.steps_end_at_samples;
+    is.tolerance = s.tolerance;
     return is;
 }
 

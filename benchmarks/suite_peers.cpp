@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "rocksweep/app/options.hpp"
 #include "rocksweep/physics/integrator.hpp"
 #include "rocksweep/records/suite_sweep.hpp"
 #include "suite_smatteo.hpp"
@@ -37,8 +38,9 @@ int main(int argc, char** argv) {
     IntegratorSettings is;  // the sweep's defaults: events, 48 steps per period, samples end steps
     if (setting == "paper") is.method = Method::paper;
     else if (setting == "events48_cross") is.steps_end_at_samples = false;
+    else if (setting == "tolerance") is.tolerance = Options{}.numerics.tolerance;  // the sweep's default since issue 22
     else if (setting != "events48") {
-        std::fprintf(stderr, "suite_peers: --setting must be events48, events48_cross or paper\n");
+        std::fprintf(stderr, "suite_peers: --setting must be events48, events48_cross, tolerance or paper\n");
         return 2;
     }
     const SuiteSpec spec = bench::smatteo_suite(csv, levels, radii);
