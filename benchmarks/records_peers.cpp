@@ -63,8 +63,9 @@ const std::vector<Setting> kSettings = {
     {"events96_cross", Method::events, 96, 1e-3, true, false},
     {"events384", Method::events, 384, 1e-4, true, true},
     // Error-controlled steps (issue 22): the sweep's default and simulate's.
-    {"tol1e-6", Method::events, 48, 1e-3, true, true, 1e-6},
+    {"tol1e-8", Method::events, 48, 1e-3, true, true, 1e-8},
     {"tol1e-9", Method::events, 384, 1e-4, true, true, 1e-9},
+    {"tol1e-10", Method::events, 384, 1e-4, true, true, 1e-10},
     {"paper", Method::paper, 0, 1e-3, true},
 };
 
