@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -111,4 +112,30 @@ TEST(RecordAccuracy, TheGlobalErrorFallsLikeTheTolerance) {
     const double overall = std::log10(errors.front() / errors.back()) / static_cast<double>(errors.size() - 1);
     EXPECT_NEAR(overall, 1.0, 0.15);
     EXPECT_LT(errors.back(), 1e-8);
+}
+
+TEST(RecordAccuracy, ErrorControlledLanesTakeTheSameStepsAloneAndInABatch) {
+    // Each lane chooses its own steps from its own error: a cell's result is the same bits
+    // whatever the batch width and its neighbours (ranks and chunks hand out cells the same way).
+    std::vector<CellModel> cells;
+    for (const double scale : {0.5, 1.0, 1.5, 2.0, 2.5, 3.0, 0.8, 1.2, 2.2}) {
+        const Pulse p = read_record(kRecords + "/elcentro_1940_NS.dat", "g", scale, kBlock.gravity);
+        cells.push_back(make_cell_model(kBlock, free_anchorage(), p));
+        cells.push_back(make_cell_model(kBlock, constant_anchorage(kBlock, 0.4 * kBlock.mass_kg * kBlock.gravity, kBlock.alpha_rad), p));
+    }
+    const IntegratorSettings s = with_tolerance(1e-8);
+    std::vector<CellResult> one(cells.size()), eight(cells.size()), four(cells.size());
+    integrate_cells(cells, one, s, 1);
+    integrate_cells(cells, four, s, 4);
+    integrate_cells(cells, eight, s, 8);
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+        SCOPED_TRACE(i);
+        for (const auto* r : {&four[i], &eight[i]}) {
+            EXPECT_EQ(r->outcome, one[i].outcome);
+            EXPECT_EQ(r->steps, one[i].steps);
+            EXPECT_EQ(r->impacts, one[i].impacts);
+            EXPECT_EQ(std::memcmp(&r->max_rotation, &one[i].max_rotation, sizeof(double)), 0);
+            EXPECT_EQ(std::memcmp(&r->t_overturn_s, &one[i].t_overturn_s, sizeof(double)), 0);
+        }
+    }
 }
