@@ -84,6 +84,8 @@ std::vector<Setting> numerics_settings(const IntegratorSettings& s, double impac
         {"method", "method", to_string(s.method), 0.0, true},
         paper ? num("paper_dt_s", "paper-dt", s.paper_dt_s, format_number(s.paper_dt_s))
               : num("steps_per_period", "steps-per-period", s.steps_per_period, format_number(s.steps_per_period)),
+        // Files from before --tolerance had fixed steps under records too.
+        {"tolerance", "tolerance", format_number(s.tolerance), s.tolerance, false, "0"},
         num("max_steps", "max-steps", static_cast<double>(s.max_steps), std::to_string(s.max_steps)),
         // 1: a safe block is decided by energy after the excitation; 0: --no-energy-stop.
         num("energy_stop", "no-energy-stop", s.energy_stop ? 1.0 : 0.0, s.energy_stop ? "not given" : "given"),
