@@ -61,7 +61,7 @@ def main(argv=None):
         if c == 0:
             ax.legend(loc="lower left", fontsize=8)
         ax = axes[1, c]
-        med, beta = sc["median"][s, a, j], sc["beta"][s, a, j]
+        med, beta = sc["median_intensity"][s, a, j], sc["beta"][s, a, j]
         status = sc["fit_status_names"][s, a, j]
         if np.isfinite(med) and np.isfinite(beta) and beta > 0:
             ax.semilogx(x, normal_cdf(np.log(x / med) / beta), "C0-", label=f"fit: median {med:.3g} {units}, beta {beta:.2f}")

@@ -11,7 +11,7 @@ function R = read_risk(file, scenario)
 %     R.states             damage-state names (cell array); R.alpha_rad, R.radius_m;
 %                          R.intensity (the deaggregation's points), R.level (the suite's levels)
 %     R.rate_fit, R.rate_fit_lo, R.rate_fit_hi, R.probability_fit, R.return_period_fit,
-%     R.share_below_fit, R.share_above_fit, and the same *_empirical, R.median, R.beta,
+%     R.share_below_fit, R.share_above_fit, and the same *_empirical, R.median_intensity, R.beta,
 %     R.fit_status         [state, alpha, radius]: R.rate_fit(s, a, j) is the annual rate of
 %                          state R.states{s} at R.alpha_rad(a), R.radius_m(j)
 %     R.deaggregation_fit, R.deaggregation_empirical   [state, alpha, radius, intensity]
@@ -56,7 +56,7 @@ function R = read_risk(file, scenario)
         names = [names, {['rate_' s], ['rate_' s '_lo'], ['rate_' s '_hi'], ['probability_' s], ...
                          ['return_period_' s], ['share_below_' s], ['share_above_' s], ['deaggregation_' s]}];
     end
-    for v = [names, {'median', 'beta', 'fit_status', 'fraction'}]
+    for v = [names, {'median_intensity', 'beta', 'fit_status', 'fraction'}]
         x = ncread(file, [g '/' v{1}]);
         % ncread reverses the dimensions; a trailing singleton is dropped, so pad to the rank.
         rank = 3 + any(strcmp(v{1}, {'deaggregation_fit', 'deaggregation_empirical', 'fraction'}));

@@ -15,7 +15,7 @@ As a module:
                                       # rate_fit_lo/hi, probability_fit, return_period_fit,
                                       # share_below_fit, share_above_fit; the same *_empirical
     sc["deaggregation_fit"][s, a, j, k]   # d lambda / d ln x at intensity[k]
-    sc["median"], sc["beta"], sc["fit_status_names"]   # [s, a, j]: the suite's lognormal fit
+    sc["median_intensity"], sc["beta"], sc["fit_status_names"]   # [s, a, j]: the suite's lognormal fit
     sc["fraction"][s, a, j, l]        # the suite's empirical fraction at level[l]
 
 A file that is not a risk file raises RiskFileError with one line saying why.
@@ -87,7 +87,7 @@ def load(path):
             if "level" not in R:
                 R["level"] = g["level"][()]
             sc = {k: g[k][()] for k in _per_block_names() + ["deaggregation_fit", "deaggregation_empirical",
-                                                               "median", "beta", "fraction"]}
+                                                               "median_intensity", "beta", "fraction"]}
             sc["fit_status"] = g["fit_status"][()]
             sc["fit_status_names"] = np.vectorize(lambda c: FIT_STATUS[c])(sc["fit_status"]) if sc["fit_status"].size else sc["fit_status"]
             R["scenarios"][name] = sc

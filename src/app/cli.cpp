@@ -361,6 +361,7 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
         if (*suite) check_suite_options(app, *suite, args, suite_cmd);
         if (*risk) check_risk_options(app, args);
         if (*synth) check_synthetic_options(*synth, synth_cmd.source);
+        synth_cmd.source.any_pga = suite_cmd.synthetic.any_pga = opts.numerics.record_any_pga;
         note_file_inputs(app);
     } catch (const CLI::Success& e) {  // --help, --help-all, --version: to stdout, once
         if (mpi.is_root()) app.exit(e);

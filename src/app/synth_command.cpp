@@ -78,6 +78,10 @@ ResolvedSource resolve(const SyntheticSource& s, std::ostream* log) {
     ResolvedSource r;
     if (s.fitted()) {
         const Record rec = read_record(record_source(s.record));
+        // A record in the wrong unit would give motions 100x too strong or weak (synth) or a
+        // model of another record's kind; the same refusal as simulate --record's.
+        if (!s.any_pga && !plausible_pga(rec))
+            throw InputError("record", s.record.record, implausible_pga(rec, "pass --record-any-pga to fit it"));
         synthetic::FitSettings fs;
         fs.fc_hz = s.params.fc_hz;
         const synthetic::FitResult fit = synthetic::fit_model(rec.ax_g, rec.dt_s, fs);

@@ -45,8 +45,11 @@ SuiteFragilityTable read_table(const h5::File& f, const std::string& path) {
         s.name = name;
         const auto read = [&](const char* n) { return h5::read_array<double>(fr, n).values; };
         s.fraction = read("fraction"), s.fraction_lo = read("fraction_lo"), s.fraction_hi = read("fraction_hi");
-        s.median = read("median_intensity"), s.beta = read("beta");
-        s.median_lo = read("median_intensity_lo"), s.median_hi = read("median_intensity_hi");
+        // Suite files of format 3 on name the fitted median median_intensity (xarray's
+        // Dataset.median hid `median`); those of formats 1 and 2 are read too.
+        const std::string median = fr.exists("median_intensity") ? "median_intensity" : "median";
+        s.median = read(median.c_str()), s.median_lo = read((median + "_lo").c_str());
+        s.median_hi = read((median + "_hi").c_str()), s.beta = read("beta");
         s.beta_lo = read("beta_lo"), s.beta_hi = read("beta_hi");
         s.fit_status = h5::read_array<std::uint8_t>(fr, "fit_status").values;
         const std::size_t blocks = t.blocks();
@@ -131,7 +134,7 @@ void write_scenario(const h5::Group& parent, const RiskReport& r, const Scenario
     const h5::Dataset st = grid.write_on<std::uint8_t>("fit_status", fr.fit_status, block);
     io::write_fit_status_flags(st, "the suite's lognormal fit status (docs/fragility.md); rate_fit is NaN unless ok or zero_dispersion");
     // The suite's fragility beside the rate it gave, for the figure (scripts/plot_risk.py).
-    put("median", fr.median, units, "the suite's lognormal fit: median");
+    put("median_intensity", fr.median, units, "the suite's lognormal fit: median intensity");
     put("beta", fr.beta, "1", "the suite's lognormal fit: dispersion");
     const h5::Dataset frac = grid.write_on<double>("fraction", fr.fraction, {"damage_state", "alpha_rad", "radius_m", "level"});
     h5::write_attribute(frac, "units", "1");
@@ -148,6 +151,7 @@ void write_contents(const h5::File& f, const RiskReport& r, const Provenance& pr
     h5::write_attribute(f, "title", "rocksweep seismic risk of a record suite at a site");
     h5::write_attribute(f, "format_version", format_version);
     h5::write_attribute(f, "kind", "risk");
+    h5::write_attribute(f, "Conventions", h5::cf_conventions);
     h5::write_attribute(f, "suite_file", r.suite_path);
     h5::write_attribute(f, "hazard_file", r.hazard_path);
     h5::write_attribute(f, "hazard_format", hz.format);

@@ -42,4 +42,29 @@ for name, p in P["scenarios"].items():
             assert abs(area / lam - 1) < 0.01, (name, s, area, lam)
 assert checked >= 6, checked
 print("plain and OpenQuake rates agree on", checked, "rates")
+# As every rocksweep file (tests/io/test_xarray_names.py): CF Conventions, and no variable that
+# xarray or numpy would hide behind a method (`median` is Dataset.median).
+import xarray as xr
+taken = set(dir(xr.Dataset)) | set(dir(xr.DataArray)) | set(dir(np.ndarray))
+with read_risk.h5py.File(sys.argv[1]) as f:
+    conventions = f.attrs["Conventions"]
+    assert (conventions.decode() if isinstance(conventions, bytes) else conventions) == "CF-1.8", conventions
+    names = set()
+    f.visit(lambda n: names.add(n.rsplit("/", 1)[-1]))
+assert not names & taken, sorted(names & taken)
 PY
+
+# A suite file of format 2 (before its median was renamed median_intensity) gives the same risk.
+cp "$suite" "$dir/suite_v2.h5"
+/usr/bin/python3 - "$dir/suite_v2.h5" <<'PY'
+import sys
+import h5py
+with h5py.File(sys.argv[1], "r+") as f:
+    f.attrs["format_version"] = 2
+    for g in f["suite"].values():
+        for new, old in (("median_intensity", "median"), ("median_intensity_lo", "median_lo"), ("median_intensity_hi", "median_hi")):
+            g["fragility"].move(new, old)
+PY
+"$rs" risk --suite-file "$dir/suite_v2.h5" --hazard "$repo/configs/hazard_illustrative_pga.csv" -o "$dir/v2.h5" --overwrite --quiet \
+  --exposure-years 50
+h5diff -d 0 "$dir/plain.h5" "$dir/v2.h5" /risk

@@ -18,6 +18,16 @@ bad_synth(synth_duration_ratio "--d595 = 900 is invalid: D5-95 / t_mid = 128.6 m
           --arias 0.5 --d595 900 --tmid 7 --f-mid 4 --f-slope -0.1 --zeta 0.3)
 bad_synth(synth_filter_past_sampling "--dt = 0.06 is invalid: the filter's highest frequency, 4.7 Hz, must stay below a quarter of the sampling rate: dt < 0.05319 s"
           ${MODEL} --dt 0.06)
+# A record fitted in the wrong unit (El Centro is in g): refused as simulate and suite refuse it.
+set(ELCENTRO_CM ${PROJECT_SOURCE_DIR}/tests/data/elcentro_1940_NS.dat --record-units cm/s^2)
+bad_synth(synth_record_implausible_pga "--record = .*elcentro_1940_NS.dat is invalid: its peak ground acceleration as read in cm/s\\^2, .* outside the 0.005 to 5 g .*pass --record-any-pga to fit it"
+          --record ${ELCENTRO_CM})
+add_test(NAME cli.bad_input.suite_synthetic_record_implausible_pga
+         COMMAND ${EXPECT} 2 "--record = .*elcentro_1940_NS.dat is invalid: its peak ground acceleration as read in cm/s\\^2, .* outside the 0.005 to 5 g"
+                 ${OUT} -- ${RS} suite --config ${CFG} --synthetic-count 2 --record ${ELCENTRO_CM} -o ${OUT})
+add_test(NAME cli.synth_record_any_pga_fits
+         COMMAND bash -c "$0 synth --record-any-pga --record $1 --record-units cm/s^2 -q --overwrite -o $2 && test -s $2/suite.csv"
+                 ${RS} ${PROJECT_SOURCE_DIR}/tests/data/elcentro_1940_NS.dat ${CMAKE_CURRENT_BINARY_DIR}/synth_any_pga)
 bad_synth(synth_record_without_units "--record-units = \\(missing\\) is invalid: g, m/s\\^2 or cm/s\\^2"
           --record ${PROJECT_SOURCE_DIR}/tests/data/elcentro_1940_NS.dat)
 add_test(NAME cli.bad_input.synth_model_option_without_count

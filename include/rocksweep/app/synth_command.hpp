@@ -20,6 +20,7 @@ struct SyntheticSource {
     double duration_s = 0.0;              ///< 0: default_duration_s
     std::uint64_t seed = 1;
     std::size_t count = 0;                ///< motions; 0 = none (suite: no synthetic source)
+    bool any_pga = false;                 ///< --record-any-pga: fit a record whose PGA as read is implausible
 
     bool fitted() const { return !record.record.empty(); }
 };
@@ -32,7 +33,8 @@ void add_synthetic_options(CLI::App& sub, SyntheticSource& source);
 void check_synthetic_options(const CLI::App& sub, const SyntheticSource& source);
 
 /// The parameters and sampling of a checked source: fits when --record is given (printing the
-/// fit to `log` unless null). Throws InputError for a record the model cannot take.
+/// fit to `log` unless null). Throws InputError for a record the model cannot take, and, unless
+/// any_pga, for one whose PGA as read betrays a unit mistake (as simulate and suite do).
 struct ResolvedSource {
     synthetic::ModelParameters params;
     double dt_s = 0.0, duration_s = 0.0;
