@@ -116,13 +116,17 @@ Swing outward_swing(const CellModel& m, double ke, double kappa_out, double kapp
 }
 
 Works step_works(const CellModel& m, double k_n_m, const StepEnds& step, double t) {
+    return step_works(m, k_n_m, step, step.t0, t);
+}
+
+Works step_works(const CellModel& m, double k_n_m, const StepEnds& step, double ta, double t) {
     Works w;
     // Gauss-Legendre nodes on [-1, 1]: 0, +-sqrt(3/5), weights 8/9, 5/9, on each piece of the
     // step where the ground is smooth: a step may cross a record's samples.
     constexpr double x[3] = {-0.7745966692414834, 0.0, 0.7745966692414834};
     constexpr double wt[3] = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};
     const double b = m.half_width_m, t_end = m.pulse.end_time();
-    for (double a = step.t0; a < t;) {
+    for (double a = ta; a < t;) {
         const double e = std::min(t, a < t_end ? std::min(m.pulse.next_kink(a), t_end) : INFINITY);
         const double h = e - a;
         Works piece;

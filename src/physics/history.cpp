@@ -30,14 +30,23 @@ History sample_history(const CellModel& cell, IntegratorSettings settings, doubl
         h.e_switch.push_back(s.switch_energy);
     };
     const StepObserver obs = [&](const StepRecord& s) {
+        // The step's works from each sample time t to its end, taken off the cumulative value at
+        // t1; the works up to t are added up sample by sample, so that a long step (a block at
+        // rest through a whole record) costs its samples once, not once per output sample.
+        const double k_n_m = s.k_left + s.k_right;
+        Works all{}, to_t{};
+        bool have_all = false;
+        double t_prev = s.t0;
         while (sample_time(k) <= s.t1 && sample_time(k) <= t_end_s) {
             const double t = sample_time(k);
             if (t < s.t0) { ++k; continue; }
             double th, thd;
             s.at(t, th, thd);
-            // The step's works from t to its end, taken off the cumulative value at t1.
-            const Works all = step_works(cell, s.k_left + s.k_right, s, s.t1);
-            const Works to_t = step_works(cell, s.k_left + s.k_right, s, t);
+            if (!have_all) all = step_works(cell, k_n_m, s, s.t1), have_all = true;
+            const Works piece = step_works(cell, k_n_m, s, t_prev, t);
+            to_t.excitation_j += piece.excitation_j;
+            to_t.anchorage_j += piece.anchorage_j;
+            t_prev = t;
             push(t, th, thd, s, Works{all.excitation_j - to_t.excitation_j, all.anchorage_j - to_t.anchorage_j});
             ++k;
         }

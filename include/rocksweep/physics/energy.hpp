@@ -48,5 +48,8 @@ struct Works {
     double anchorage_j = 0.0;
 };
 Works step_works(const CellModel& m, double k_n_m, const StepEnds& step, double t);
+/// The same over [ta, tb] of the step (step.t0 <= ta <= tb <= step.t1): a history that samples
+/// a long step adds these pieces up instead of integrating from t0 at each sample.
+Works step_works(const CellModel& m, double k_n_m, const StepEnds& step, double ta, double tb);
 
 }  // namespace rocksweep
