@@ -1,0 +1,91 @@
+#include "rocksweep/motion/response_spectrum.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace rocksweep::motion {
+
+namespace {
+
+// The oscillator's response inside one step from (u0, v0) under a(tau) = a0 + slope tau, in
+// closed form (Nigam & Jennings 1969): a decaying oscillation about the particular solution
+// A + B tau of the linear input.
+class StepResponse {
+public:
+    StepResponse(const Oscillator& o, OscillatorState x0, double a0, double slope) {
+        const double w = o.omega(), k = w * w;
+        zw_ = o.damping * w;
+        wd_ = w * std::sqrt(1.0 - o.damping * o.damping);
+        b_ = -slope / k;
+        a_ = (-a0 - 2.0 * zw_ * b_) / k;
+        c1_ = x0.u - a_;
+        c2_ = (x0.v - b_ + zw_ * c1_) / wd_;
+    }
+    double u(double tau) const {
+        return std::exp(-zw_ * tau) * (c1_ * std::cos(wd_ * tau) + c2_ * std::sin(wd_ * tau)) + a_ + b_ * tau;
+    }
+    double v(double tau) const {
+        const double c = std::cos(wd_ * tau), s = std::sin(wd_ * tau);
+        return std::exp(-zw_ * tau) * ((wd_ * c2_ - zw_ * c1_) * c - (wd_ * c1_ + zw_ * c2_) * s) + b_;
+    }
+
+private:
+    double zw_, wd_, a_, b_, c1_, c2_;
+};
+
+// The largest |u| where v changes sign inside (lo, hi), found by bisection on v.
+double interior_peak(const StepResponse& r, double lo, double hi, double v_lo) {
+    for (int k = 0; k < 60 && hi - lo > 0.0; ++k) {
+        const double mid = 0.5 * (lo + hi);
+        const double vm = r.v(mid);
+        ((vm > 0.0) == (v_lo > 0.0) ? lo : hi) = mid;
+        if ((vm > 0.0) == (v_lo > 0.0)) v_lo = vm;
+    }
+    return std::abs(r.u(0.5 * (lo + hi)));
+}
+
+}  // namespace
+
+double spectral_acceleration(std::span<const double> a, double dt_s, const Oscillator& o) {
+    if (a.size() < 2) throw std::invalid_argument("spectral_acceleration: at least two samples");
+    const ExactStep step(o, dt_s);
+    // Pieces of at most T/8 in a step: v has at most one zero in each (its zeros are ~T/2 apart).
+    const int pieces = std::max(1, static_cast<int>(std::ceil(8.0 * dt_s / o.period_s)));
+    OscillatorState x;
+    double peak = 0.0;
+    for (std::size_t i = 1; i < a.size(); ++i) {
+        const OscillatorState next = step.advance(x, a[i - 1], a[i]);
+        peak = std::max(peak, std::abs(next.u));
+        if (pieces > 1 || (next.v > 0.0) != (x.v > 0.0)) {
+            const StepResponse r(o, x, a[i - 1], (a[i] - a[i - 1]) / dt_s);
+            double t0 = 0.0, v0 = x.v;
+            for (int p = 1; p <= pieces; ++p) {
+                const double t1 = dt_s * p / pieces, v1 = p == pieces ? next.v : r.v(t1);
+                if (pieces > 1 && p < pieces) peak = std::max(peak, std::abs(r.u(t1)));
+                if ((v1 > 0.0) != (v0 > 0.0) && v0 != 0.0) peak = std::max(peak, interior_peak(r, t0, t1, v0));
+                t0 = t1;
+                v0 = v1;
+            }
+        }
+        x = next;
+    }
+    return o.omega() * o.omega() * peak;
+}
+
+std::vector<double> response_spectrum(std::span<const double> a, double dt_s, std::span<const double> periods_s, double zeta) {
+    std::vector<double> sa;
+    sa.reserve(periods_s.size());
+    for (double t : periods_s) sa.push_back(spectral_acceleration(a, dt_s, Oscillator{t, zeta}));
+    return sa;
+}
+
+std::vector<double> floor_spectrum_periods() {
+    constexpr int n = 60;
+    constexpr double lo = 0.02, hi = 5.0;
+    std::vector<double> t(n);
+    for (int i = 0; i < n; ++i) t[i] = lo * std::pow(hi / lo, static_cast<double>(i) / (n - 1));
+    return t;
+}
+
+}  // namespace rocksweep::motion
