@@ -11,6 +11,7 @@
 #include "rocksweep/app/axis_options.hpp"
 #include "rocksweep/app/memory_budget.hpp"
 #include "rocksweep/records/record.hpp"
+#include "rocksweep/records/suite_sweep.hpp"
 
 namespace rocksweep {
 
@@ -271,7 +272,8 @@ CellModel make_single_cell(const Options& o) {
     Pulse pulse;
     pulse.ax_g = s.amplitude_ratio * b.alpha_rad;
     if (!s.record.empty()) {
-        pulse = to_pulse(read_record(record_source(s)), b.gravity);
+        const Record ground = read_record(record_source(s));
+        pulse = to_pulse(s.floor.empty() ? ground : on_floor(ground, motion::parse_floor("floor", s.floor)), b.gravity);
     } else if (s.pulse == "sine") {
         pulse.kind = PulseKind::sine;
         pulse.omega = s.omega_ratio * b.p();

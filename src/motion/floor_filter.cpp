@@ -1,5 +1,6 @@
 #include "rocksweep/motion/floor_filter.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <sstream>
@@ -78,6 +79,25 @@ std::vector<double> floor_motion(const Floor& floor, std::span<const double> a, 
     detail::StateSpace s = state_space(floor.stages.front());
     for (std::size_t k = 1; k < floor.stages.size(); ++k) s = detail::series(s, state_space(floor.stages[k]));
     return detail::FirstOrderHold(s, dt_s).response(a);
+}
+
+int floor_oversampling(const Floor& floor, double dt_s) {
+    double shortest = INFINITY;
+    for (const FloorFilter& f : floor.stages)
+        for (const Mode& m : f.modes) shortest = std::min(shortest, m.oscillator.period_s);
+    if (floor.is_ground()) return 1;
+    // (2 pi h / T)^2 / 8 <= tolerance
+    const double h_max = shortest * std::sqrt(8.0 * floor_interpolation_tolerance) / (2.0 * M_PI);
+    return std::max(1, static_cast<int>(std::ceil(dt_s / h_max)));
+}
+
+std::vector<double> oversample(std::span<const double> a, int m) {
+    std::vector<double> fine;
+    fine.reserve((a.size() - 1) * static_cast<std::size_t>(m) + 1);
+    for (std::size_t i = 0; i + 1 < a.size(); ++i)
+        for (int j = 0; j < m; ++j) fine.push_back(a[i] + (a[i + 1] - a[i]) * j / m);
+    fine.push_back(a.back());
+    return fine;
 }
 
 Floor parse_floor(const std::string& field, const std::string& text) {

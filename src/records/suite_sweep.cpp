@@ -6,6 +6,7 @@
 
 #include "rocksweep/core/errors.hpp"
 #include "rocksweep/grid/block_family.hpp"
+#include "rocksweep/motion/response_spectrum.hpp"
 #include "rocksweep/physics/integrator.hpp"
 
 namespace rocksweep {
@@ -25,6 +26,8 @@ constexpr MeasureInfo measures[] = {
     {IntensityMeasure::pgv_m_s, "pgv", "pgv_m_s", "m/s", "target peak ground velocity"},
     {IntensityMeasure::pga_ratio, "pga-ratio", "pga_ratio", "1", "target PGA / (g tan alpha)"},
     {IntensityMeasure::scale, "scale", "scale", "1", "scale factor applied to every record"},
+    {IntensityMeasure::sa_g, "sa", "sa_g", "1", "target spectral pseudo-acceleration Sa(T, zeta) of the ground / standard gravity"},
+    {IntensityMeasure::pfa_g, "pfa", "pfa_g", "1", "target peak floor acceleration / standard gravity"},
 };
 
 const MeasureInfo& info(IntensityMeasure m) {
@@ -38,7 +41,7 @@ const MeasureInfo& info(IntensityMeasure m) {
 IntensityMeasure parse_intensity_measure(const std::string& field, const std::string& text) {
     for (const MeasureInfo& i : measures)
         if (text == i.word) return i.measure;
-    throw InputError(field, text, "one of pga, pgv, pga-ratio, scale");
+    throw InputError(field, text, "one of pga, pgv, pga-ratio, scale, sa, pfa");
 }
 
 std::string to_string(IntensityMeasure m) { return info(m).name; }
@@ -47,10 +50,12 @@ const char* intensity_long_name(IntensityMeasure m) { return info(m).long_name; 
 
 Block SuiteSpec::block_of(double alpha_rad, double radius_m) const { return reshaped_block(block, alpha_rad, radius_m); }
 
-double SuiteSpec::scale_factor(std::size_t r, std::size_t alpha, std::size_t level) const {
+double SuiteSpec::scale_factor(std::size_t r, std::size_t alpha, std::size_t level, std::size_t floor) const {
     const double x = intensity.at(level);
     const IntensityMeasures& im = records.at(r).measures;
     switch (measure) {
+        case IntensityMeasure::sa_g: return x / records[r].sa_g;
+        case IntensityMeasure::pfa_g: return x / records[r].floors.at(floor).pfa_g;
         case IntensityMeasure::pga_g: return x / im.pga_g;
         case IntensityMeasure::pgv_m_s: return x / im.pgv_m_s;
         case IntensityMeasure::pga_ratio: return x / pga_over_g_tan_alpha(im.pga_g, alphas_rad.at(alpha), block.gravity);
@@ -84,26 +89,58 @@ CellModel SuiteSpec::cell(std::size_t index) const {
     const Block b = block_of(alphas_rad[at.alpha], radii_m[at.radius]);
     // Every cell of a record shares its samples (both components); the level scales them per lane.
     const SuiteMember& rec = records[at.record];
-    Pulse pulse = rec.pulse.record && b.gravity == block.gravity ? rec.pulse : to_pulse(rec.record, b.gravity);
-    pulse.record_scale = scale_factor(at.record, at.alpha, at.level);
+    const std::size_t floor = floor_of(at.scenario);
+    const FloorResponse& on = rec.floors.at(floor);
+    Pulse pulse = on.pulse.record && b.gravity == block.gravity ? on.pulse : to_pulse(on_floor(rec.record, floors[floor]), b.gravity);
+    pulse.record_scale = scale_factor(at.record, at.alpha, at.level, floor);
     return make_cell_model(b, anchorage_on(sc, block, b), pulse, equations, impact_threshold);
+}
+
+Record on_floor(const Record& ground, const motion::Floor& floor) {
+    Record on = ground;
+    if (floor.is_ground()) return on;
+    const int m = motion::floor_oversampling(floor, ground.dt_s);
+    on.dt_s = ground.dt_s / m;
+    on.ax_g = motion::floor_motion(floor, motion::oversample(ground.ax_g, m), on.dt_s);
+    if (!ground.ay_g.empty()) on.ay_g = motion::oversample(ground.ay_g, m);
+    return on;
 }
 
 SuiteSpec make_suite_spec(const std::string& suite_path, const Block& block, std::vector<Scenario> scenarios,
                           IntensityMeasure measure, Axis intensity, std::vector<double> radii_m,
-                          std::vector<double> alphas_rad) {
+                          std::vector<double> alphas_rad, SuiteMotions motions) {
     SuiteSpec spec;
     spec.block = block;
     spec.suite_path = suite_path;
+    spec.sa = motions.sa;
+    spec.floors = motions.floors.empty() ? std::vector<motion::Floor>{motion::Floor{}} : motions.floors;
+    for (std::size_t i = 0; i < spec.floors.size(); ++i)
+        for (std::size_t j = 0; j < i; ++j)
+            if (spec.floors[i].name == spec.floors[j].name)
+                throw InputError("floor", spec.floors[i].name, "distinct names (a floor is listed twice)");
     const RecordSuite suite = read_record_suite(suite_path);
     spec.metadata_columns = suite.metadata_columns;
+    const std::vector<double> periods = motion::floor_spectrum_periods();
     for (const SuiteRecord& entry : suite.records) {
-        SuiteMember m{entry, read_record(entry.source), {}, {}};
+        SuiteMember m{entry, read_record(entry.source), {}, {}, 0.0, {}};
         m.measures = intensity_measures(m.record);
         m.pulse = to_pulse(m.record, block.gravity);
+        m.sa_g = motion::spectral_acceleration(m.record.ax_g, m.record.dt_s, spec.sa);
+        for (const motion::Floor& floor : spec.floors) {
+            const Record r = on_floor(m.record, floor);
+            FloorResponse on;
+            on.pulse = floor.is_ground() ? m.pulse : to_pulse(r, block.gravity);
+            for (double x : r.ax_g) on.pfa_g = std::max(on.pfa_g, std::abs(x));
+            on.spectrum_g = motion::response_spectrum(r.ax_g, r.dt_s, periods, 0.05);
+            m.floors.push_back(std::move(on));
+        }
         // A level is reached by dividing by the record's own measure: a record without one
         // (all zeros) cannot be scaled to any level.
-        const double own = measure == IntensityMeasure::pgv_m_s ? m.measures.pgv_m_s : m.measures.pga_g;
+        double own = measure == IntensityMeasure::pgv_m_s ? m.measures.pgv_m_s
+                     : measure == IntensityMeasure::sa_g  ? m.sa_g
+                                                          : m.measures.pga_g;
+        if (measure == IntensityMeasure::pfa_g)
+            for (const FloorResponse& on : m.floors) own = std::min(own, on.pfa_g);
         if (measure != IntensityMeasure::scale && !(own > 0.0))
             throw InputError("suite", suite_path + " line " + std::to_string(entry.line),
                              "records with a non-zero " + std::string(info(measure).name) + " to scale to a level (" +
@@ -117,7 +154,14 @@ SuiteSpec make_suite_spec(const std::string& suite_path, const Block& block, std
     if (alphas_rad.empty()) alphas_rad.push_back(block.alpha_rad);
     spec.radii_m = std::move(radii_m);
     spec.alphas_rad = std::move(alphas_rad);
-    spec.scenarios = std::move(scenarios);
+    // Every scenario on every floor; on the ground alone, the scenarios keep their names.
+    const bool ground_only = spec.floors.size() == 1 && spec.floors[0].is_ground();
+    for (std::size_t f = 0; f < spec.floors.size(); ++f)
+        for (Scenario sc : scenarios) {
+            if (!ground_only) sc.name += "@" + spec.floors[f].name;
+            spec.scenarios.push_back(std::move(sc));
+            spec.scenario_floor.push_back(f);
+        }
     return spec;
 }
 

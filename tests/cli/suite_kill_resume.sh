@@ -1,16 +1,16 @@
 #!/usr/bin/env bash
-# suite_kill_resume.sh ROCKSWEEP CONFIG SUITE WORKDIR NP
+# suite_kill_resume.sh ROCKSWEEP CONFIG SUITE WORKDIR NP [OPTION...]
 # SIGKILL a suite sweep at several moments; each time the file (if any) must open, and
 # --resume must end with exactly the datasets of an uninterrupted run. The kills come at fixed
 # delays after the output file first appears (its first checkpoint), not after the start, so
 # that a faster engine or a slower MPI start does not move them past the run's end: 64 levels,
 # about 3 s on one rank.
 set -eu
-rs="$1"; cfg="$2"; suite="$3"; dir="$4"; np="$5"
+rs="$1"; cfg="$2"; suite="$3"; dir="$4"; np="$5"; shift 5  # the rest: options added to every run
 source "$(dirname "${BASH_SOURCE[0]}")/kill_job.sh"
 mkdir -p "$dir"
 args=(suite --config "$cfg" --suite "$suite" --anchorages free constant adaptive --theta-f-ratios 1 --kmin-ratios 0.1
-      --intensity-points 64 --radius-range 0.6 3 --radius-points 4 --steps-per-period 96 --quiet --checkpoint-interval 0.2)
+      --intensity-points 64 --radius-range 0.6 3 --radius-points 4 --steps-per-period 96 --quiet --checkpoint-interval 0.2 "$@")
 run=("$rs")
 if [ "$np" -gt 1 ]; then
   run=(mpirun --oversubscribe -np "$np")

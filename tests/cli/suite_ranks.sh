@@ -1,18 +1,19 @@
 #!/usr/bin/env bash
-# suite_ranks.sh ROCKSWEEP CONFIG SUITE WORKDIR
+# suite_ranks.sh ROCKSWEEP CONFIG SUITE WORKDIR [OPTION...]
 # A suite sweep gives bitwise identical result datasets (products included) on 1, 2 and 3
-# ranks and with any chunk size: h5diff of everything but /provenance.
+# ranks and with any chunk size: h5diff of everything but /provenance. Options after WORKDIR
+# are added to every run (floors, measures).
 set -eu
-rs="$1"; cfg="$2"; suite="$3"; dir="$4"
+rs="$1"; cfg="$2"; suite="$3"; dir="$4"; shift 4
 mkdir -p "$dir"
 args=(suite --config "$cfg" --suite "$suite" --anchorages free constant adaptive --theta-f-ratios 1 --kmin-ratios 0.1
       --intensity-points 4 --radius-range 0.8 2.4 --radius-points 2 --alpha-range 0.15 0.25 --alpha-points 2
-      --quiet --overwrite)
+      --quiet --overwrite "$@")
 mpi=(mpirun --oversubscribe)
 [ "$(id -u)" -eq 0 ] && mpi+=(--allow-run-as-root)
 ref="$dir/ref.h5"
 "$rs" "${args[@]}" -o "$ref"
-h5ls "$ref/suite/free/fragility/median" >/dev/null || { echo "no fragility in a complete suite file"; exit 1; }
+h5ls -r "$ref/suite" | grep -q "/fragility/median " || { echo "no fragility in a complete suite file"; exit 1; }
 for run in "2 1" "2 7" "3 64"; do
   set -- $run
   out="$dir/np$1-chunk$2.h5"

@@ -69,6 +69,7 @@ struct SingleOptions {
     int record_column = 0;               ///< 1-based, the time column counted; 0: the format's default
     std::string record_vertical;         ///< the vertical component's file ("" with a column: --record's file)
     int record_vertical_column = 0;      ///< its column, 1-based as record_column; 0: none or the format's default
+    std::string floor;                   ///< the floor the block stands on (motion/floor_filter.hpp); "": the ground
 };
 
 struct Options {

@@ -47,6 +47,19 @@ std::vector<double> filter_motion(const FloorFilter& filter, std::span<const dou
 /// that it is exact at the samples too (a stage's output is not linear between samples).
 std::vector<double> floor_motion(const Floor& floor, std::span<const double> a, double dt_s);
 
+/// A floor's motion is smooth between the record's samples, and the block reads it linear
+/// between the samples it is given: with samples h apart, a component of period T is read off by
+/// up to (2 pi h / T)^2 / 8 of its amplitude. The floor is computed on samples fine enough that
+/// this stays below `floor_interpolation_tolerance` at the shortest period of its modes
+/// (docs/physics.md, "Floor motions", gives the measurement that chose it).
+inline constexpr double floor_interpolation_tolerance = 1e-3;
+
+/// How many floor samples per record step `dt_s` that takes: 1 for the ground.
+int floor_oversampling(const Floor& floor, double dt_s);
+
+/// `a` (samples dt apart, linear between them) at m samples per step: the same motion, exactly.
+std::vector<double> oversample(std::span<const double> a, int m);
+
 /// A floor as written on the command line or in a config:
 ///   "NAME"                                  the ground (no filter; the name must be "ground")
 ///   "NAME: T zeta gphi; T zeta gphi > T zeta gphi"
