@@ -1,6 +1,7 @@
 #include "rocksweep/io/suite_file.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <optional>
 #include <set>
 
@@ -45,6 +46,12 @@ void write_measure_on(const GridGroup& grid, const char* name, const std::vector
     h5::write_attribute(ds, "long_name", long_name);
 }
 
+// The shortest text that reads back as the same double: a resume compares it exactly.
+std::string shortest(double x) {
+    char buf[32];
+    return std::string(buf, std::to_chars(buf, buf + sizeof buf, x).ptr);
+}
+
 std::string floor_texts(const SuiteSpec& spec) {
     std::string texts;
     for (const motion::Floor& f : spec.floors) texts += (texts.empty() ? "" : "\n") + motion::to_string(f);
@@ -56,7 +63,7 @@ std::vector<io::NamedText> root_texts(const SuiteSpec& spec) {
     return {{"intensity_measure", to_string(spec.measure)},
             {"records", record_names(spec)},
             {"floors", floor_texts(spec)},
-            {"sa_oscillator", "T = " + format_short(spec.sa.period_s, 17) + " s, zeta = " + format_short(spec.sa.damping, 17)}};
+            {"sa_oscillator", "T = " + shortest(spec.sa.period_s) + " s, zeta = " + shortest(spec.sa.damping)}};
 }
 
 double median(std::vector<double> v) {
