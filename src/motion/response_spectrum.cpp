@@ -36,7 +36,7 @@ private:
 
 // The largest |u| where v changes sign inside (lo, hi), found by bisection on v.
 double interior_peak(const StepResponse& r, double lo, double hi, double v_lo) {
-    for (int k = 0; k < 60 && hi - lo > 0.0; ++k) {
+    for (int k = 0; k < 52 && hi - lo > 0.0; ++k) {  // to the last bit of tau in (0, T/8]
         const double mid = 0.5 * (lo + hi);
         const double vm = r.v(mid);
         ((vm > 0.0) == (v_lo > 0.0) ? lo : hi) = mid;
@@ -51,22 +51,24 @@ double spectral_acceleration(std::span<const double> a, double dt_s, const Oscil
     if (a.size() < 2) throw std::invalid_argument("spectral_acceleration: at least two samples");
     const ExactStep step(o, dt_s);
     // Pieces of at most T/8 in a step: v has at most one zero in each (its zeros are ~T/2 apart).
+    // Their states come from the exact map of a piece (no transcendental function per piece);
+    // the closed form is evaluated only where v changes sign.
     const int pieces = std::max(1, static_cast<int>(std::ceil(8.0 * dt_s / o.period_s)));
+    const ExactStep piece(o, dt_s / pieces);
     OscillatorState x;
     double peak = 0.0;
     for (std::size_t i = 1; i < a.size(); ++i) {
-        const OscillatorState next = step.advance(x, a[i - 1], a[i]);
+        const double a0 = a[i - 1], a1 = a[i], slope = (a1 - a0) / dt_s;
+        const OscillatorState next = step.advance(x, a0, a1);
         peak = std::max(peak, std::abs(next.u));
-        if (pieces > 1 || (next.v > 0.0) != (x.v > 0.0)) {
-            const StepResponse r(o, x, a[i - 1], (a[i] - a[i - 1]) / dt_s);
-            double t0 = 0.0, v0 = x.v;
-            for (int p = 1; p <= pieces; ++p) {
-                const double t1 = dt_s * p / pieces, v1 = p == pieces ? next.v : r.v(t1);
-                if (pieces > 1 && p < pieces) peak = std::max(peak, std::abs(r.u(t1)));
-                if ((v1 > 0.0) != (v0 > 0.0) && v0 != 0.0) peak = std::max(peak, interior_peak(r, t0, t1, v0));
-                t0 = t1;
-                v0 = v1;
-            }
+        OscillatorState s0 = x;
+        for (int p = 1; p <= pieces; ++p) {
+            const double t0 = dt_s * (p - 1) / pieces, t1 = dt_s * p / pieces;
+            const OscillatorState s1 = p == pieces ? next : piece.advance(s0, a0 + slope * t0, a0 + slope * t1);
+            peak = std::max(peak, std::abs(s1.u));
+            if ((s1.v > 0.0) != (s0.v > 0.0) && s0.v != 0.0)
+                peak = std::max(peak, interior_peak(StepResponse(o, s0, a0 + slope * t0, slope), 0.0, t1 - t0, s0.v));
+            s0 = s1;
         }
         x = next;
     }
