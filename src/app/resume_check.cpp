@@ -83,7 +83,8 @@ std::string shown(const std::vector<std::string>* v) {
 
 const std::set<std::string>& resumable_freely() {
     static const std::set<std::string> free{"lanes", "chunk", "checkpoint-interval", "part", "parts",
-                                            "refine", "refine-axes", "axis", "scenario"};
+                                            "refine", "refine-axes", "axis", "scenario",
+                                            "floor", "sa-period", "sa-damping"};
     return free;
 }
 
