@@ -43,8 +43,11 @@ SuiteFragilityTable read_table(const h5::File& f, const std::string& path) {
         ScenarioFragility s;
         s.name = name;
         const auto read = [&](const char* n) { return h5::read_array<double>(fr, n).values; };
+        // Suite files of format 3 on name the fitted median median_intensity (format 2: median).
+        const auto either = [&](const char* now, const char* before) { return read(fr.exists(now) ? now : before); };
         s.fraction = read("fraction"), s.fraction_lo = read("fraction_lo"), s.fraction_hi = read("fraction_hi");
-        s.median = read("median"), s.beta = read("beta"), s.median_lo = read("median_lo"), s.median_hi = read("median_hi");
+        s.median = either("median_intensity", "median"), s.beta = read("beta");
+        s.median_lo = either("median_intensity_lo", "median_lo"), s.median_hi = either("median_intensity_hi", "median_hi");
         s.beta_lo = read("beta_lo"), s.beta_hi = read("beta_hi");
         s.fit_status = h5::read_array<std::uint8_t>(fr, "fit_status").values;
         const std::size_t blocks = t.blocks();
