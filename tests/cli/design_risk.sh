@@ -8,7 +8,7 @@ mkdir -p "$dir"
 cd "$repo"
 "$rs" design --config configs/design.toml --suite configs/records_suite.csv --intensity-points 8 \
   --coarse-points 3 --rounds 1 --hazard configs/hazard_illustrative_pga.csv --exposure-years 50 \
-  --overwrite --quiet -o "$dir/design.h5"
+  --keep-rounds --overwrite --quiet -o "$dir/design.h5"
 "$rs" risk --suite-file "$dir/design.round0.h5" --hazard configs/hazard_illustrative_pga.csv --overwrite --quiet \
   -o "$dir/risk.h5"
 /usr/bin/python3 - "$dir/design.h5" "$dir/risk.h5" scripts <<'PY'
