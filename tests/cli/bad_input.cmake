@@ -145,7 +145,7 @@ add_test(NAME cli.bad_input.config_bom_in_key
                  ${OUT} -- ${RS} sweep --config ${B}/bom_in_key.toml -o ${OUT})
 string(ASCII 1 CTRL)
 bad_config(control_in_key "1: expected '=' after a key, found byte 0x01" "mass${CTRL}x = 1\n")
-bad_config(unknown_table "2: table \\[foo\\] is not one of rocksweep's: \\[sweep\\], \\[merge\\], \\[simulate\\], \\[info\\], \\[design\\], \\[basin\\], \\[suite\\], \\[synth\\], \\[block\\]"
+bad_config(unknown_table "2: table \\[foo\\] is not one of rocksweep's: \\[sweep\\], \\[merge\\], \\[simulate\\], \\[info\\], \\[design\\], \\[basin\\], \\[suite\\], \\[risk\\], \\[synth\\], \\[block\\]"
            "mass = 1\n[foo]\n")
 bad_config(misplaced_underscore "1: '3__361' is not a number \\(an underscore must sit between two digits\\)" "mass = 3__361\n")
 bad_config(unclosed_array "2: an array without its closing '\\]'" "mass = 1\nkmin-ratios = [0.5,\n 0.1\n")
