@@ -49,6 +49,16 @@ PY
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 /usr/bin/python3 "$here/tests/scripts/check_figure.py" --expect "$dir/floors" -- \
   /usr/bin/python3 "$here/scripts/plot_floors.py" "$out" -o "$dir/floors"
+# Levels of Sa(0.5 s) meet a site's SA(0.5) hazard curve in rocksweep risk; SA(1.0) is refused.
+printf 'SA(0.5) [g],annual_rate [1/yr]\n0.1,1e-2\n0.5,1e-4\n' > "$dir/sa05.csv"
+printf 'SA(1.0) [g],annual_rate [1/yr]\n0.1,1e-2\n0.5,1e-4\n' > "$dir/sa10.csv"
+"$rs" risk --suite-file "$out" --hazard "$dir/sa05.csv" --overwrite --quiet -o "$dir/risk.h5"
+h5ls "$dir/risk.h5/risk/free@f2" >/dev/null || { echo "no risk of the block on f2"; exit 1; }
+set +e
+err=$("$rs" risk --suite-file "$out" --hazard "$dir/sa10.csv" --overwrite --quiet -o "$dir/risk10.h5" 2>&1)
+status=$?
+set -e
+[ "$status" -eq 2 ] && grep -qF "sa_g at T = 0.5 s" <<<"$err" || { echo "SA(1.0) against Sa(0.5 s) levels: exit $status: $err"; exit 1; }
 cp "$out" "$dir/before.h5"
 expect_refusal() {
   local what="$1"; shift
