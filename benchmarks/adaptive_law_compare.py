@@ -57,9 +57,10 @@ def band(values):
 
 
 def spectra_tables(files, out, phase):
-    with h5py.File(files["paper"]) as f:
-        w = f["axes/omega_ratio"][()]
-        a = f["axes/amplitude_ratio"][()]
+    with h5py.File(files["paper"]) as f:  # format 2: every scenario group holds the axes
+        g = f["spectra"][scenario("paper", RHOS[0])]
+        w = g["omega_ratio"][()]
+        a = g["amplitude_ratio"][()]
     W, A = np.meshgrid(w, a)
     lines = ["| rho | law | safe fraction | saved by passive | lost by passive | omega_p/p where they differ | "
              "a_p0/(alpha g) where they differ | peak F/F_u, both safe: median | max | passive lower in |",
@@ -69,7 +70,6 @@ def spectra_tables(files, out, phase):
         with h5py.File(files["paper"]) as f:
             for key in f.attrs:
                 c.attrs[key] = f.attrs[key]
-            f.copy("axes", c)
             c.create_group("spectra")
         for law in LAWS:
             with h5py.File(files[law]) as f:

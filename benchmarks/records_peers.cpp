@@ -47,6 +47,8 @@ struct Setting {
     double impact_threshold;
     bool timed;               ///< false: only histories (the reference pair)
     bool steps_end_at_samples = true;  ///< events: every record sample ends a step (else they cross)
+    double tolerance = 0.0;  ///< events: > 0, steps chosen from the error (IntegratorSettings::tolerance)
+    double paper_dt_s = 0.0025;  ///< paper: its fixed step
 };
 
 // The reference pair: two tight settings that differ in both knobs and in how a step meets the
@@ -61,7 +63,15 @@ const std::vector<Setting> kSettings = {
     {"events48_cross", Method::events, 48, 1e-3, true, false},
     {"events96_cross", Method::events, 96, 1e-3, true, false},
     {"events384", Method::events, 384, 1e-4, true, true},
+    // Error-controlled steps (issue 22): the sweep's default and simulate's.
+    {"tol1e-8", Method::events, 48, 1e-3, true, true, 1e-8},
+    {"tol1e-9", Method::events, 384, 1e-4, true, true, 1e-9},
+    {"tol1e-10", Method::events, 384, 1e-4, true, true, 1e-10},
     {"paper", Method::paper, 0, 1e-3, true},
+    // The paper's method at finer steps: first order, its error halves with dt (issue 22's
+    // work-precision comparison at equal error).
+    {"paper_dt6.3e-4", Method::paper, 0, 1e-3, true, true, 0.0, 0.0025 / 4},
+    {"paper_dt1.6e-4", Method::paper, 0, 1e-3, true, true, 0.0, 0.0025 / 16},
 };
 
 /// One run: a record at a scale, with one anchorage.
@@ -130,6 +140,8 @@ IntegratorSettings integrator(const Setting& s) {
     is.method = s.method;
     if (s.method == Method::events) is.steps_per_period = s.steps_per_period;
     is.steps_end_at_samples = s.steps_end_at_samples;
+    is.tolerance = s.tolerance;
+    is.paper_dt_s = s.paper_dt_s;
     return is;
 }
 
@@ -235,7 +247,8 @@ int main(int argc, char** argv) {
     app.add_option("--min-seconds", min_seconds, "time: wall seconds per setting, at least")->check(CLI::Range(0.0, 600.0))->capture_default_str();
     app.add_option("--lanes", lanes, "time: lanes of integrate_cells")->check(CLI::IsMember({1, 4, 8, 16}))->capture_default_str();
     app.add_option("--only", only, "time: this setting alone (for a profiler)")
-        ->check(CLI::IsMember({"events48", "events48_cross", "events96_cross", "events384", "paper"}));
+        ->check(CLI::IsMember({"events48", "events48_cross", "events96_cross", "events384", "tol1e-8", "tol1e-9", "tol1e-10",
+                               "paper", "paper_dt6.3e-4", "paper_dt1.6e-4"}));
     CLI11_PARSE(app, argc, argv);
     try {
         return run(mode, suite, out, lanes, min_seconds, only);

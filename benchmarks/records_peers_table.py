@@ -21,14 +21,19 @@ import sys
 # then amplifies perturbations a thousandfold at least, and its theta error says more about
 # the run than about the integrator. 1e-9 rad is a thousandth of the 1e-6 rad claim.
 CHAOTIC_RAD = 1e-9
-PEERS = ["events48", "events48_cross", "events96_cross", "events384", "paper", "scipy", "scipy_tight"]
-TIMED = ["events48", "events48_cross", "events96_cross", "events384", "paper", "scipy"]
+PEERS = ["events48", "events48_cross", "events96_cross", "events384", "tol1e-8", "tol1e-9", "tol1e-10", "paper", "paper_dt6.3e-4", "paper_dt1.6e-4", "scipy", "scipy_tight"]
+TIMED = ["events48", "events48_cross", "events96_cross", "events384", "tol1e-8", "tol1e-9", "tol1e-10", "paper", "paper_dt6.3e-4", "paper_dt1.6e-4", "scipy"]
 WHAT = {
     "events48": "rocksweep events, 48 steps/period, settle 1e-3 (sweep default): every sample ends a step",
     "events48_cross": "the same with steps that cross samples on moment nodes (steps_end_at_samples off)",
     "events96_cross": "96 steps/period crossing samples",
-    "events384": "rocksweep events, 384 steps/period, settle 1e-4 (simulate default)",
+    "events384": "rocksweep events, 384 steps/period, settle 1e-4 (simulate's fixed step before issue 22)",
+    "tol1e-8": "rocksweep events, steps from the error, tolerance 1e-8, settle 1e-3 (sweep default)",
+    "tol1e-9": "rocksweep events, steps from the error, tolerance 1e-9, settle 1e-4",
+    "tol1e-10": "rocksweep events, steps from the error, tolerance 1e-10, settle 1e-4",
     "paper": "paper's method: fixed-step RK4, dt 0.0025 s, impact at step end",
+    "paper_dt6.3e-4": "paper's method at dt 0.000625 s",
+    "paper_dt1.6e-4": "paper's method at dt 0.00015625 s",
     "scipy": "scipy solve_ivp RK45 rtol 1e-6 atol 1e-9, settle 1e-4",
     "scipy_tight": "scipy solve_ivp RK45 rtol 1e-11 atol 1e-13, settle 1e-8 (check only)",
 }
@@ -121,7 +126,8 @@ def main(folder):
     # sample, so a one-step method of order 4 ends a step at every sample while the block rocks.
     rocking = sum(sum(1 for x in ref[r] if x != 0.0) for r in runs)
     steps = {}
-    for p in ("events48", "events48_cross", "events96_cross", "events384", "paper"):
+    for p in ("events48", "events48_cross", "events96_cross", "events384", "tol1e-8", "tol1e-9", "tol1e-10", "paper",
+              "paper_dt6.3e-4", "paper_dt1.6e-4"):
         o = outcomes(folder, p)  # read once per peer, not once per run
         steps[p] = sum(int(o[r]["steps"]) for r in runs)
     print(f"\n== Steps (RK4 steps over the {len(runs)} runs; each costs four evaluations of the equation of motion) ==")

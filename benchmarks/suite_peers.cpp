@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "rocksweep/app/options.hpp"
 #include "rocksweep/physics/integrator.hpp"
 #include "rocksweep/records/suite_sweep.hpp"
 #include "suite_smatteo.hpp"
@@ -24,6 +25,7 @@ int main(int argc, char** argv) {
     std::string csv = "configs/records_suite.csv", setting, cells_path;
     std::size_t levels = 30, radii = 8;
     int lanes = 8;
+    double tolerance = Options{}.numerics.tolerance;
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string k = argv[i], v = argv[i + 1];
         if (k == "--setting") setting = v;
@@ -32,13 +34,15 @@ int main(int argc, char** argv) {
         else if (k == "--radii") radii = std::stoul(v);
         else if (k == "--lanes") lanes = std::stoi(v);
         else if (k == "--cells") cells_path = v;
+        else if (k == "--tolerance") tolerance = std::stod(v);
         else { std::fprintf(stderr, "suite_peers: unknown option %s\n", k.c_str()); return 2; }
     }
     IntegratorSettings is;  // the sweep's defaults: events, 48 steps per period, samples end steps
     if (setting == "paper") is.method = Method::paper;
     else if (setting == "events48_cross") is.steps_end_at_samples = false;
+    else if (setting == "tolerance") is.tolerance = tolerance;  // the sweep's default since issue 22 unless given
     else if (setting != "events48") {
-        std::fprintf(stderr, "suite_peers: --setting must be events48, events48_cross or paper\n");
+        std::fprintf(stderr, "suite_peers: --setting must be events48, events48_cross, tolerance or paper\n");
         return 2;
     }
     const SuiteSpec spec = bench::smatteo_suite(csv, levels, radii);

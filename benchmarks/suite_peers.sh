@@ -1,13 +1,13 @@
 #!/usr/bin/env bash
 # suite_peers.sh [ROUNDS]: the whole shared suite (configs/suite_smatteo.toml's 8640 cells) on
-# one thread per integrator setting -- the sweep default, steps crossing the samples, the paper's
+# one thread per integrator setting -- the sweep default (error-controlled), the old fixed default, steps crossing the samples, the paper's
 # method -- at 1 and 8 lanes, in interleaved rounds; the ratio to the paper's method within each
 # round (median [min, max]), the RK4 steps, and the steps per record. The outcomes these settings
 # get wrong over the same cells: benchmarks/records_outcomes.sh.
 #   benchmarks/suite_peers.sh 3     -> benchmarks/results/suite_peers.txt  (about 2 min)
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh" suite_peers
 rounds="${1:-3}"
-settings=(events48 events48_cross paper)
+settings=(events48 tolerance events48_cross paper)
 tmp="$(mktemp -d)"
 trap 'rm -rf "$tmp"' EXIT
 field() { awk -v k="$1" '{for (i = 1; i < NF; ++i) if ($i == k) print $(i + 1)}'; }
@@ -46,7 +46,8 @@ field() { awk -v k="$1" '{for (i = 1; i < NF; ++i) if ($i == k) print $(i + 1)}'
     {a[$2] += $5; b[$2] += $10; p[$2] += $15; dt[$2] = 1}
     END {for (k in dt) printf "%-28s %11d %11d %11d %9.1f %9.1f\n", k, a[k], b[k], p[k], p[k] / a[k], p[k] / b[k]}' | sort
   echo
-  echo "  events48        the sweep default: events, 48 steps per period, every record sample ends a step"
+  echo "  events48        the sweep default before issue 22: events, 48 steps per period, every record sample ends a step"
+  echo "  tolerance       the sweep default since issue 22: steps chosen from the error, --tolerance's default"
   echo "  events48_cross  the same with steps that cross the samples on moment nodes (--record-steps cross)"
   echo "  paper           the paper's method: fixed-step RK4, dt 0.0025 s, impact at the step end"
   echo "  Cells are computed in chunks of 64 as a rank gets them; only the computation is timed."

@@ -25,8 +25,8 @@ from rsplot import plt  # noqa: E402
 # (outcome code, colour, legend label): the spectra's colours, rest for safe.
 OUTCOMES = [
     (0, "#f7f7f7", "comes back to rest"),
-    (1, "#4a7fb5", "overturns after an impact"),
-    (2, "#e08a3c", "overturns without an impact"),
+    (1, rsplot.OKABE_ITO["blue"], "overturns after an impact"),
+    (2, rsplot.OKABE_ITO["orange"], "overturns without an impact"),
     (255, "#000000", "not converged"),
 ]
 
@@ -102,8 +102,8 @@ def plot(data, out):
                              squeeze=False)
     for ax, s in zip(axes.flat, data["scenarios"]):
         panel(ax, data, s)
-        ax.set_xlabel(r"initial $\theta / \alpha$")
-        ax.set_ylabel(r"initial $\dot\theta / p$")
+        ax.set_xlabel(r"initial $\theta / \alpha$ [–]")
+        ax.set_ylabel(r"initial $\dot\theta / p$ [–]")
     for ax in axes.flat[n:]:
         ax.axis("off")
     present = set(np.unique(np.concatenate([s["outcome"].ravel() for s in data["scenarios"]])))

@@ -12,12 +12,12 @@ the paper's four constant springs (theta_f = alpha ... alpha/4) and its two adap
 (0.5, 0.1) are marked. Where the file sets a rotation or force limit, the share of the region
 where the block merely stays up is drawn thin, for comparison.
 """
-import math
 import os
 import sys
 
 import h5py
 import numpy as np
+from matplotlib.ticker import NullLocator
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import rsplot  # noqa: E402
@@ -56,13 +56,14 @@ def stiffness(ratio, a):
 
 def draw_curve(ax, x, curve, a, colour, unit):
     """Dots, line, near-optimal band, optimum star and free reference of one curve: the safe share,
-    or, for a design at a site's hazard curve (design --hazard), the annual rate it minimised."""
+    or, for a design at a site's hazard curve (design --hazard), the annual rate it minimised.
+    Returns the values drawn, for a y range shared by both panels."""
     risk = "annual_rate" in curve
     y_key, standing_key, free_key = (("annual_rate", "annual_rate_overturning", "free_annual_rate") if risk
                                      else ("safe_fraction", "standing_fraction", "free_safe_fraction"))
     y = curve[y_key]
     shown = [y, [a[free_key]]]
-    coarse = curve["round"] == 0
+    coarse = curve["search_round" if "search_round" in curve else "round"] == 0  # "round" before format 2
     ax.plot(x, y, color=colour, lw=1.2, zorder=2)
     ax.plot(x[coarse], y[coarse], "o", mfc="white", mec=colour, ms=6, zorder=3, label="coarse round")
     ax.plot(x[~coarse], y[~coarse], "o", color=colour, ms=4, zorder=3, label="refinement rounds")
@@ -72,38 +73,51 @@ def draw_curve(ax, x, curve, a, colour, unit):
         shown.append(curve[standing_key])
     lo, hi = curve["attrs"]["near_optimal_range"]
     ax.axvspan(lo, hi, color=colour, alpha=0.12, lw=0,
-               label="within {:g} of the best{}".format(
-                   a.get("near_optimal", 0), " exp(-rate t)" if risk else ""))
+               label="within {:g} of the best{}".format(a.get("near_optimal", 0), " exp(-rate t)" if risk else ""))
     i = int(curve["attrs"]["optimum_index"])
-    ax.plot(x[i], y[i], "*", color="#D55E00", ms=16, mec="k", mew=0.6, zorder=4,
+    ax.plot(x[i], y[i], "*", color=rsplot.OKABE_ITO["vermillion"], ms=16, mec="k", mew=0.6, zorder=4,
             label="best: {} → {}".format(unit(x[i]), "{:.3g}/yr".format(y[i]) if risk else "{:.3f}".format(y[i])))
     free = a[free_key]
     ax.axhline(free, color="k", ls="--", lw=1.0,
                label="free-standing: {}".format("{:.3g}/yr".format(free) if risk else "{:.3f}".format(free)))
     ax.set_xscale("log")
-    values = np.concatenate([np.ravel(v) for v in shown])
     if risk:
         ax.set_yscale("log")
         ax.set_ylabel("annual rate of the unacceptable state [1/yr]")
-        ax.set_ylim(float(values.min()) / 1.5, float(values.max()) * 2.5)
     else:
-        ax.set_ylabel("safe fraction of the hazard")
-        ax.set_ylim(float(values.min()) - 0.05, float(values.max()) + 0.08)
+        ax.set_ylabel("safe fraction of the hazard [–]")
+    return np.concatenate([np.ravel(v) for v in shown])
+
+
+def mark_paper(ax, values, words):
+    """The paper's values as dotted verticals, named just above the panel's lower edge (the top
+    holds the secondary axis and the title)."""
+    lo = ax.get_ylim()[0]
+    for v, w in zip(values, words):
+        ax.axvline(v, color="0.45", lw=0.8, ls=":")
+        ax.annotate(w, (v, lo), xytext=(-3, 4), textcoords="offset points", rotation=90, va="bottom", ha="right",
+                    fontsize=8, color="0.35")
 
 
 def plot(D, out):
     a, c, r = D["attrs"], D["constant"], D["adaptive"]
-    fig, (ax_k, ax_r) = plt.subplots(1, 2, figsize=(13, 6.4), layout="constrained")
+    # One y range for both panels: the two anchorages compare at a glance.
+    fig, (ax_k, ax_r) = plt.subplots(1, 2, figsize=(13, 6.4), layout="constrained", sharey=True)
 
     k = c["stiffness"]
-    draw_curve(ax_k, k, c, a, rsplot.run_colour(0),
-               lambda v: "K = {:.3g} kN/m ($\\theta_f$ = {:.3g} α)".format(v / 1e3, float(theta_f_ratio(v, a))))
-    for ratio in PAPER_THETA_F:
-        kk = float(stiffness(ratio, a))
-        if k.min() <= kk <= k.max():
-            ax_k.axvline(kk, color="0.45", lw=0.8, ls=":")
-            ax_k.text(kk, ax_k.get_ylim()[1], r"$\theta_f = {}$ ".format(rsplot.alpha_fraction(ratio)), rotation=90,
-                      va="top", ha="right", fontsize=8, color="0.35")
+    shown = draw_curve(ax_k, k, c, a, rsplot.run_colour(0),
+                       lambda v: "K = {:.3g} kN/m ($\\theta_f$ = {:.3g} α)".format(v / 1e3, float(theta_f_ratio(v, a))))
+    rho = r["kmin_ratio"]
+    shown = np.concatenate([shown, draw_curve(ax_r, rho, r, a, rsplot.run_colour(2),
+                                              lambda v: "$K_{{min}}/K_{{max}}$ = {:.3g}".format(v))])
+    if "annual_rate" in c:
+        ax_k.set_ylim(float(shown.min()) / 1.5, float(shown.max()) * 2.5)
+    else:
+        ax_k.set_ylim(float(shown.min()) - 0.05, float(shown.max()) + 0.04)
+    ax_r.tick_params(labelleft=True)
+    paper_k = [r for r in PAPER_THETA_F if k.min() <= float(stiffness(r, a)) <= k.max()]
+    mark_paper(ax_k, [float(stiffness(r, a)) for r in paper_k],
+               [r"$\theta_f = {}$".format(rsplot.alpha_fraction(r)) for r in paper_k])
     ax_k.set_xlabel("constant anchorage stiffness K [N/m]  (dotted: the paper's $\\theta_f$)")
     ax_k.set_title("constant K, $F_u$ = {:.3g} kN".format(a["strength_N"] / 1e3))
     sec = ax_k.secondary_xaxis("top", functions=(lambda v: theta_f_ratio(v, a), lambda t: stiffness(t, a)))
@@ -111,15 +125,11 @@ def plot(D, out):
     sec.set_xticks(ticks, labels=["{:g}".format(t) for t in ticks])
     sec.set_xlabel(r"fracture angle $\theta_f / \alpha$ at $F_u$", fontsize=9)
     sec.tick_params(labelsize=8)
+    sec.xaxis.set_minor_locator(NullLocator())  # minor ticks of a log axis crowd the top of the panel
 
-    rho = r["kmin_ratio"]
-    draw_curve(ax_r, rho, r, a, rsplot.run_colour(2), lambda v: "$K_{{min}}/K_{{max}}$ = {:.3g}".format(v))
-    for ratio in PAPER_KMIN:
-        if rho.min() <= ratio <= rho.max():
-            ax_r.axvline(ratio, color="0.45", lw=0.8, ls=":")
-            ax_r.text(ratio, ax_r.get_ylim()[1], "paper: {:g} ".format(ratio), rotation=90, va="top", ha="right",
-                      fontsize=8, color="0.35")
-    ax_r.set_xlabel("$K_{min} / K_{max}$  (dotted: the paper's 0.5 and 0.1)")
+    paper_r = [v for v in PAPER_KMIN if rho.min() <= v <= rho.max()]
+    mark_paper(ax_r, paper_r, ["paper: {:g}".format(v) for v in paper_r])
+    ax_r.set_xlabel("$K_{min} / K_{max}$ [–]  (dotted: the paper's 0.5 and 0.1)")
     ax_r.set_title("adaptive, $K_{{max}}$ = {:.3g} kN/m ($\\theta_f$ = ${}$)".format(
         r["attrs"]["k_max_N_per_m"] / 1e3, rsplot.alpha_fraction(r["attrs"].get("k_max_theta_f_ratio", 1))))
     for ax in (ax_k, ax_r):

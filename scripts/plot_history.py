@@ -8,8 +8,11 @@ of the left and of the right spring as K/K_max (the paper's Fig. 16; 0 while a s
 or broken); the cumulative works of the excitation and of the anchorage (Eq. 23-24). Each run
 keeps one colour in every panel. The stiffness panels are left out when no run is anchored.
 
-A CSV history carries no attributes: its label is its file name, and theta is drawn in radians
-unless --alpha gives the block's alpha (all runs are then drawn as theta/alpha).
+A CSV history carries no attributes: its label is its file name; its theta is drawn over the
+alpha that --alpha gives, else over the alpha of the HDF5 runs when they share one (its label
+says so), else every run is drawn in radians. An overturning run is drawn until it leaves the
+theta panel (|theta| = 2.2 alpha, lying down), a cross marking that point in the theta and
+theta_dot panels; the time axis spans the longest record.
 """
 import math
 import os
@@ -18,12 +21,25 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import rshistory  # noqa: E402
 import rsplot  # noqa: E402
 from rsplot import plt  # noqa: E402
 
 
+THETA_SHOWN = 2.2  # |theta| / alpha drawn: past 2 alpha the block is lying down
+
+
 def load_all(paths, alpha):
-    return [rsplot.History(p, alpha=alpha) for p in paths]
+    return rshistory.share_alpha([rshistory.History(p, alpha=alpha) for p in paths])
+
+
+def drawn_until(run, by_alpha):
+    """Samples drawn of a run: all of them, or an overturning block's up to where it leaves
+    the theta panel (beyond, it is falling over; its theta_dot would dwarf the rocking)."""
+    if not by_alpha or not math.isfinite(float(run.attrs.get("t_overturn", float("nan")))):
+        return len(run.t)
+    out = np.flatnonzero(np.abs(run.data["theta"]) > THETA_SHOWN * run.alpha)
+    return int(out[0]) + 1 if out.size else len(run.t)
 
 
 def panels_for(runs):
@@ -41,18 +57,6 @@ def panels_for(runs):
     return panels
 
 
-def end_of_motion(runs):
-    """A little after the last run comes to rest (or overturns): the rest of a long record
-    is flat lines."""
-    ends = []
-    for r in runs:
-        theta = np.abs(r.data["theta"])
-        moving = np.flatnonzero(theta > 1e-3 * (r.alpha or np.max(theta)))
-        ends.append(r.t[moving[-1]] if moving.size else r.t[-1])
-    t_end = max(r.t[-1] for r in runs)
-    return min(t_end, 1.08 * max(ends) + 0.5)
-
-
 def plot(runs, out, title=None):
     panels = panels_for(runs)
     heights = {"ground": 0.8, "theta": 1.3, "theta_dot": 1.0, "k_left": 0.6, "k_right": 0.6, "work": 1.0}
@@ -66,53 +70,64 @@ def plot(runs, out, title=None):
     )
     ax = dict(zip(panels, np.atleast_1d(axes)))
     by_alpha = all(r.alpha for r in runs)
-    labels, common = rsplot.run_labels(runs)
+    labels, common = rshistory.run_labels(runs)
+    for j, run in enumerate(runs):  # a run drawn exactly over an earlier one would hide it: say so
+        same = [i for i in range(j) if np.array_equal(runs[i].data["theta"], run.data["theta"])]
+        if same:
+            labels[j] += ", identical to the {} run (drawn over it)".format(rsplot.RUN_COLOUR_NAMES[same[0] % 7])
     g = runs[0].g
 
     handles = []
+    peak_rate = 1e-9
     for i, (run, label) in enumerate(zip(runs, labels)):
-        c = rsplot.run_colour(i)
+        c, ls = rsplot.run_style(i)
         t = run.t
+        n = drawn_until(run, by_alpha)
         theta = run.data["theta"] / run.alpha if by_alpha else run.data["theta"]
-        (line,) = ax["theta"].plot(t, theta, color=c, lw=1.2, label=label)
+        (line,) = ax["theta"].plot(t[:n], theta[:n], color=c, ls=ls, lw=1.2, label=rsplot.wrap_label(label, 70 if len(runs) < 4 else 45))
         handles.append(line)
-        if math.isfinite(float(run.attrs.get("t_overturn", float("nan")))):
-            ax["theta"].plot(t[-1], theta[-1], "x", color=c, ms=8, mew=2)
+        falls = n < len(t) or math.isfinite(float(run.attrs.get("t_overturn", float("nan"))))
+        if falls:
+            ax["theta"].plot(t[n - 1], np.clip(theta[n - 1], -THETA_SHOWN, THETA_SHOWN) if by_alpha else theta[n - 1],
+                             "x", color=c, ms=8, mew=2, clip_on=False, zorder=4)
         if "ground" in ax and run.has("ground_acc"):
-            ax["ground"].plot(t, run.data["ground_acc"] / g, color=c, lw=1.2)
+            ax["ground"].plot(t, run.data["ground_acc"] / g, color=c, ls=ls, lw=1.2)
         if "theta_dot" in ax and run.has("theta_dot"):
-            ax["theta_dot"].plot(t, run.data["theta_dot"], color=c, lw=1.2)
+            rate = run.data["theta_dot"][:n]
+            ax["theta_dot"].plot(t[:n], rate, color=c, ls=ls, lw=1.2)
+            if falls:
+                ax["theta_dot"].plot(t[n - 1], rate[-1], "x", color=c, ms=8, mew=2, clip_on=False, zorder=4)
+            peak_rate = max(peak_rate, float(np.max(np.abs(rate))))
         k_max = run.k_max()
         for side in ("k_left", "k_right"):
             if side in ax and k_max and run.has(side):
-                ax[side].plot(t, run.data[side] / k_max, color=c, lw=1.0, drawstyle="steps-post")
+                ax[side].plot(t, run.data[side] / k_max, color=c, ls=ls, lw=1.0, drawstyle="steps-post")
         if "work" in ax:
             if run.has("w_excitation"):
                 ax["work"].plot(t, run.data["w_excitation"] / 1e3, color=c, lw=1.2)
             if run.has("w_anchorage") and run.anchored():
                 ax["work"].plot(t, run.data["w_anchorage"] / 1e3, color=c, lw=1.2, ls="--")
+    if any(n < len(r.t) for r in runs for n in [drawn_until(r, by_alpha)]):
+        handles.append(ax["theta"].plot([], [], "x", color="0.3", mew=2, ls="none",
+                                        label=r"overturning: drawn until $|\theta|$ = {:g} $\alpha$".format(THETA_SHOWN))[0])
 
     if "ground" in ax:
-        ax["ground"].set_ylabel(r"$\ddot x_g / g$")
+        ax["ground"].set_ylabel(r"$\ddot x_g / g$ [–]")
         ax["ground"].axhline(0, color="0.5", lw=0.6)
     if by_alpha:
-        ax["theta"].set_ylabel(r"$\theta / \alpha$")
+        ax["theta"].set_ylabel(r"$\theta / \alpha$ [–]")
         for level in (-1, 1):
             ax["theta"].axhline(level, color="0.4", lw=0.7, ls=":")
         lo, hi = ax["theta"].get_ylim()
-        ax["theta"].set_ylim(max(lo, -2.2), min(hi, 2.2))  # past 2α the block is lying down; keep the swings readable
+        ax["theta"].set_ylim(max(lo, -THETA_SHOWN), min(hi, THETA_SHOWN))
     else:
         ax["theta"].set_ylabel(r"$\theta$ [rad]")
     if "theta_dot" in ax:
         ax["theta_dot"].set_ylabel(r"$\dot\theta$ [rad/s]")
-        # Scale to the rocking, not to the fall of an overturning block (past 2 alpha).
-        upright = [r.data["theta_dot"][np.abs(r.data["theta"]) <= 2 * (r.alpha or 0.5)] for r in runs
-                   if r.has("theta_dot")]
-        peak = max([np.max(np.abs(u)) for u in upright if u.size] + [1e-9])
-        ax["theta_dot"].set_ylim(-1.15 * peak, 1.15 * peak)
+        ax["theta_dot"].set_ylim(-1.1 * peak_rate, 1.1 * peak_rate)  # everything drawn stays inside
     for side, words in (("k_left", "left"), ("k_right", "right")):
         if side in ax:
-            ax[side].set_ylabel(r"$K_{{{}}} / K_{{max}}$".format(words))
+            ax[side].set_ylabel(r"$K_{{{}}} / K_{{max}}$ [–]".format(words))
             ax[side].set_ylim(-0.08, 1.12)
             ax[side].set_yticks([0, 0.5, 1])
     if "work" in ax:
@@ -122,19 +137,19 @@ def plot(runs, out, title=None):
             ax["work"].plot([], [], color="0.3", ls="--", label="anchorage (Eq. 24)")
         ax["work"].legend(loc="best", fontsize=8)
     list(ax.values())[-1].set_xlabel("t [s]")
-    ax["theta"].set_xlim(0, end_of_motion(runs))
+    ax["theta"].set_xlim(0, max(r.t[-1] for r in runs))  # the whole record, as computed
 
     if title is None:
         title = "\n".join(["Time history"] + common)
     fig.suptitle(title, fontsize=11)
     top = list(ax.values())[0]  # the runs' legend above the first panel; constrained layout makes room
-    top.legend(handles=handles, loc="lower left", bbox_to_anchor=(0, 1.02),
-               ncol=1, fontsize=9, frameon=False, borderaxespad=0)
+    top.legend(handles=handles, loc="lower left", bbox_to_anchor=(0, 1.02), ncol=1 if len(handles) < 5 else 2,
+               fontsize=9, frameon=False, borderaxespad=0)
     return rsplot.save(fig, out)
 
 
 def main(argv):
-    p = rsplot.history_parser(__doc__)
+    p = rshistory.history_parser(__doc__)
     args = p.parse_args(legacy_order(argv))
     plot(load_all(args.inputs, args.alpha), args.output, args.title)
     return 0

@@ -20,6 +20,7 @@ import textwrap
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import rshistory  # noqa: E402
 import rsplot  # noqa: E402
 from rsplot import plt  # noqa: E402
 
@@ -72,7 +73,9 @@ def caption(A, alpha, p, equations, durations):
 
 def plot(runs, out):
     pulses = [pulse_of(r) for r in runs]
-    fig, axes = plt.subplots(1, len(runs), figsize=(11, 5.6), sharey=True, layout="constrained", squeeze=False)
+    fig, axes = plt.subplots(1, len(runs), figsize=(11, 5.6), sharex=True, sharey=True, layout="constrained",
+                             squeeze=False)
+    t_end = max(r.t[-1] for r in runs)  # one time axis for both panels
     for i, (ax, run, (A, duration)) in enumerate(zip(axes[0], runs, pulses)):
         c = rsplot.run_colour(i)
         t, theta = run.t, run.data["theta"] / run.alpha
@@ -81,14 +84,21 @@ def plot(runs, out):
         tp = np.linspace(0, duration, 200)
         ax.plot(tp, -(A - 1) * (np.cosh(run.p * tp) - 1), ":", color="k", lw=2,
                 label="closed form during the pulse")
+        t_over = float(run.attrs.get("t_overturn", "nan"))
+        if math.isfinite(t_over):
+            # It leaves the panel at |theta| = 2.2 alpha and overturns (theta = pi/2) later:
+            # both on the axes, the overturn as a marked time on the lower edge.
+            ax.axvline(t_over, ymax=0.5, color=c, lw=1.0, ls="--")  # below the legend
+            ax.plot(t_over, math.copysign(2.2, theta[-1]), "x", color=c, ms=9, mew=2, clip_on=False, zorder=4,
+                    label="overturned at {:.2f} s".format(t_over))
         for level in (-1, 1):
             ax.axhline(level, color="0.4", lw=0.7, ls=":")
         ax.set_ylim(-2.2, 2.2)
-        ax.set_xlim(0, t[-1])
+        ax.set_xlim(0, 1.02 * max(t_end, t_over if math.isfinite(t_over) else 0))
         ax.set_xlabel("t [s]")
         ax.set_title("held {:.4f} s: {}".format(duration, run.outcome_words() or "?"))
         ax.legend(loc="upper right", fontsize=8)
-    axes[0][0].set_ylabel(r"$\theta / \alpha$")
+    axes[0][0].set_ylabel(r"$\theta / \alpha$ [–]")
     head = runs[0].block_words()
     fig.suptitle("Housner's constant ground acceleration (paper's Fig. 3)\nblock " + head, fontsize=11)
     if len({A for A, _ in pulses}) > 1:
@@ -103,7 +113,7 @@ def plot(runs, out):
 def main(argv):
     p = rsplot.parser(__doc__, "two constant-pulse histories (.h5)", n_inputs=2)
     args = p.parse_args(argv)
-    plot([rsplot.History(path) for path in args.inputs], args.output)
+    plot([rshistory.History(path) for path in args.inputs], args.output)
     return 0
 
 

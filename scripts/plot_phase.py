@@ -16,6 +16,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import rshistory  # noqa: E402
 import rsplot  # noqa: E402
 from rsplot import plt  # noqa: E402
 
@@ -34,7 +35,7 @@ def free_basin_boundary(ax, alpha, p):
 
 def plot(runs, out, title=None):
     fig, ax = plt.subplots(figsize=(8.5, 6.2), layout="constrained")
-    labels, common = rsplot.run_labels(runs)
+    labels, common = rshistory.run_labels(runs)
     by_alpha = all(r.alpha for r in runs)
     peak = 1e-9
     for i, (run, label) in enumerate(zip(runs, labels)):
@@ -45,34 +46,42 @@ def plot(runs, out, title=None):
         y = run.data["theta_dot"]
         shown = np.abs(x) <= (THETA_LIMIT if by_alpha else np.inf)
         peak = max(peak, float(np.max(np.abs(y[shown]))) if np.any(shown) else peak)
-        ax.plot(x, y, color=c, lw=1.0, label=label)
-        ax.plot(x[0], y[0], "o", color=c, ms=6, mfc="white")
         overturned = math.isfinite(float(run.attrs.get("t_overturn", float("nan"))))
-        end = np.flatnonzero(shown)[-1] if overturned and np.any(shown) else -1
-        ax.plot(x[end], y[end], "x" if overturned else "o", color=c, ms=8, mew=2)
+        # An overturning block is drawn up to the panel's edge, its cross just inside it.
+        cut = np.flatnonzero(~shown)[0] if overturned and not np.all(shown) else len(x)
+        ax.plot(x[:cut], y[:cut], color=c, lw=1.0, label=label)
+        ax.plot(x[0], y[0], "o", color=c, ms=6, mfc="white")
+        end = max(cut - 1, 0)
+        ax.plot(x[end], y[end], "x" if overturned else "o", color=c, ms=8, mew=2, clip_on=False, zorder=4)
     if by_alpha:
         free = [r for r in runs if r.attrs.get("anchorage") == "free" and r.p]
         if free:
             free_basin_boundary(ax, free[0].alpha, free[0].p)
         for level in (-1, 1):
             ax.axvline(level, color="0.4", lw=0.7, ls=":")
-        ax.set_xlim(-THETA_LIMIT, THETA_LIMIT)
-        ax.set_xlabel(r"$\theta / \alpha$")
+        ax.set_xlim(-1.06 * THETA_LIMIT, 1.06 * THETA_LIMIT)
+        ax.set_xlabel(r"$\theta / \alpha$ [–]")
     else:
         ax.set_xlabel(r"$\theta$ [rad]")
     ax.axhline(0, color="0.5", lw=0.6)
     ax.axvline(0, color="0.5", lw=0.6)
     ax.set_ylim(-1.15 * peak, 1.15 * peak)
     ax.set_ylabel(r"$\dot\theta$ [rad/s]")
-    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.11), fontsize=9, frameon=False)
+    # What the markers mean, in grey beside the runs' colours.
+    ax.plot([], [], "o", color="0.3", mfc="white", ls="none", label="start")
+    ax.plot([], [], "o", color="0.3", ls="none", label="end of the record")
+    if any(math.isfinite(float(r.attrs.get("t_overturn", float("nan")))) for r in runs):
+        ax.plot([], [], "x", color="0.3", mew=2, ls="none",
+                label="overturns (drawn to |θ| = {:g} α)".format(THETA_LIMIT) if by_alpha else "overturns")
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.11), fontsize=9, frameon=False, ncol=2)
     fig.suptitle(title or "\n".join(["Phase plane"] + common), fontsize=11)
     return rsplot.save(fig, out)
 
 
 def main(argv):
-    p = rsplot.history_parser(__doc__)
+    p = rshistory.history_parser(__doc__)
     args = p.parse_args(argv)
-    plot([rsplot.History(path, alpha=args.alpha) for path in args.inputs], args.output, args.title)
+    plot([rshistory.History(path, alpha=args.alpha) for path in args.inputs], args.output, args.title)
     return 0
 
 

@@ -9,9 +9,10 @@ Moments are scaled by m g R and counted positive when they pull the block back t
     gravity      M_g / (m g R) = sin(alpha - theta)                  (Eq. 7)
     anchorage    M_a / (m g R) = 8 b^2 K sin(theta/2) / (m g R)      (Eq. 8), 0 once broken
 with K = F_u / (4 b tan(theta_f/2)) computed here from each scenario's F_u and theta_f
-(Section 3.4); the file's own K is checked against it. An adaptive anchorage is drawn with
-K_max (solid) and K_min (dashed); both break at theta_f, or, with `adaptive-break = force`,
-K_min where its force reaches F_u.
+(Section 3.4); the file's own K is checked against it. One panel: gravity alone (Fig. 5, black)
+and gravity plus each anchorage (Fig. 6). An adaptive anchorage switches between K_max and
+K_min: it is drawn dashed at K_min, and the legend says which constant line is its K_max; it
+breaks at theta_f, or, with `adaptive-break = force`, where the K_min spring's force reaches F_u.
 """
 import math
 import os
@@ -61,8 +62,10 @@ def springs(S):
             k_min_break = at["theta_f_rad"]
             if at.get("break_rule") == "force":
                 k_min_break = 2 * math.atan(math.tan(at["theta_f_rad"] / 2) / rho)
-            out.append((r"adaptive: $K_{{min}} = {:g}\,K_{{max}}$ (its $K_{{max}}$: $\theta_f = {}$)".format(
-                rho, rsplot.alpha_fraction(at.get("theta_f_ratio", 1))), rho * k, k_min_break, True))
+            out.append((r"adaptive, drawn at $K_{{min}} = {:g}\,K_{{max}}$ = {:.4g} kN/m" "\n"
+                        r"(at $K_{{max}}$ it is the constant $\theta_f = {}$ line)".format(
+                            rho, rho * k / 1e3, rsplot.alpha_fraction(at.get("theta_f_ratio", 1))),
+                        rho * k, k_min_break, True))
         else:
             out.append((words + ", K = {:.4g} kN/m".format(k / 1e3), k, at["theta_f_rad"], False))
     return out
@@ -74,36 +77,34 @@ def plot(S, out):
     x = np.linspace(0, THETA_MAX, 2001)
     theta = x * alpha
     grav = gravity_moment(theta, alpha)
-    fig, (ax5, ax6) = plt.subplots(1, 2, figsize=(12, 5.6), layout="constrained")
+    fig, ax = plt.subplots(figsize=(10, 7.2), layout="constrained")
 
-    ax5.plot(x, grav, color="k", lw=1.6, label="gravity (free-standing block)")
-    ax5.set_title("Fig. 5: restoring moment of the self-weight")
-
-    ax6.plot(x, grav, color="k", lw=1.2, label="free-standing, or any anchorage once broken", zorder=3)
+    ax.plot(x, grav, color="k", lw=1.6, zorder=3,
+            label="gravity alone (Fig. 5): free-standing, or any anchorage once broken")
     for i, (label, k, theta_break, dashed) in enumerate(springs(S)):
         # Up to the fracture only: beyond it the block has gravity alone, the black curve.
         total = np.where(theta <= theta_break, grav + anchorage_moment(theta, k, b, m, g, R, theta_break), np.nan)
         colour = rsplot.run_colour(i)
-        ax6.plot(x, total, color=colour, lw=1.4, ls="--" if dashed else "-", label=label)
+        ax.plot(x, total, color=colour, lw=1.4, ls="--" if dashed else "-", label=label)
         x_break = theta_break / alpha
         if x_break <= THETA_MAX:
             top = float(np.sin(alpha - theta_break) + 8 * b * b * k * math.sin(theta_break / 2) / (m * g * R))
-            ax6.plot([x_break, x_break], [top, math.sin(alpha - theta_break)], color=colour, lw=0.8, ls=":")
-    ax6.set_title("Fig. 6: total restoring moment, gravity + anchorage (brittle at $\\theta_f$)")
-    for ax in (ax5, ax6):
-        ax.axhline(0, color="0.5", lw=0.6)
-        ax.axvline(1, color="0.4", lw=0.7, ls=":")
-        ax.set_xlim(0, THETA_MAX)
-        ax.set_xlabel(r"$\theta / \alpha$")
-        ax.set_ylabel(r"restoring moment $M / (m g R)$")
-        ax.legend(loc="upper right", fontsize=8)
+            ax.plot([x_break, x_break], [top, math.sin(alpha - theta_break)], color=colour, lw=0.8, ls=":")
+    ax.plot([], [], color="0.3", lw=0.8, ls=":", label=r"fracture at $\theta_f$: the moment drops to gravity's")
+    ax.axhline(0, color="0.5", lw=0.6)
+    ax.axvline(1, color="0.4", lw=0.7, ls=":")
+    ax.set_xlim(0, THETA_MAX)
+    ax.set_xlabel(r"rotation $\theta / \alpha$ [–]")
+    ax.set_ylabel(r"restoring moment $M / (m g R)$ [–]")
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.1), ncol=2, fontsize=8.5, frameon=False)
     head = rsplot.block_words(b, a.get("half_height_m"), alpha, a.get("p_rad_s"))
     strengths = {sc["attrs"].get("strength_N") for sc in S["scenarios"].values()
                  if sc["attrs"].get("anchorage") != "free"}
     if len(strengths) == 1:
         f_u = strengths.pop()
         head += ", $F_u$ = {:.4g} kN = {:.3g} m g".format(f_u / 1e3, f_u / (m * g))
-    fig.suptitle("Restoring moment against rotation\nblock " + head, fontsize=11)
+    fig.suptitle("Restoring moment against rotation (paper's Figs. 5-6): gravity + anchorage, brittle at "
+                 r"$\theta_f$" "\nblock " + head, fontsize=11)
     return rsplot.save(fig, out)
 
 

@@ -42,8 +42,8 @@ SAFE, MODE1, MODE2, NOT_CONVERGED = 0, 1, 2, 255
 # (outcome code, colour, legend label)
 OUTCOMES = [
     (SAFE, "#f7f7f7", "safe"),
-    (MODE1, "#4a7fb5", "overturned with impact (mode 1)"),
-    (MODE2, "#e08a3c", "overturned without impact (mode 2)"),
+    (MODE1, rsplot.OKABE_ITO["blue"], "overturned with impact (mode 1)"),
+    (MODE2, rsplot.OKABE_ITO["orange"], "overturned without impact (mode 2)"),
     (NOT_CONVERGED, "#000000", "not converged"),
 ]
 ALWAYS_LISTED = [label for code, _, label in OUTCOMES if code != NOT_CONVERGED]  # even where absent
@@ -67,17 +67,18 @@ FIELDS = {
 
 
 # The spectrum's two axes: the paper's ratios, or the pulse's own period and peak.
-AXIS_LABELS = {"omega_ratio": r"$\omega_p / p$", "period_s": r"pulse period $T_p$ [s]",
-               "amplitude_ratio": r"$a_{p0} / (\alpha g)$", "pga_g": r"PGA $a_{p0}$ [g]"}
+AXIS_LABELS = {"omega_ratio": r"$\omega_p / p$ [–]", "period_s": r"pulse period $T_p$ [s]",
+               "amplitude_ratio": r"$a_{p0} / (\alpha g)$ [–]", "pga_g": r"PGA $a_{p0}$ [g]"}
 
 
 class Layers:
     """What one panel shows: flat-coloured categories [(mask, colour, label)] under an optional
     continuous `value` (NaN where a category is shown)."""
 
-    def __init__(self, cats, value=None):
+    def __init__(self, cats, value=None, always=()):
         self.cats = cats
         self.value = value
+        self.always = set(always)  # labels listed in the legend even where no cell has them
 
 
 def field_layers(field, sc):
@@ -97,14 +98,14 @@ def field_layers(field, sc):
     if field == "pivot_uplift":
         up = sc["pivot_uplift"] != 0
         return Layers([(computed & ~up, SAFE_COLOUR, "pivot stays down"),
-                       (computed & up, "#b2182b", "pivot would lift: the rocking model does not hold"),
+                       (computed & up, rsplot.OKABE_ITO["vermillion"], "pivot would lift: the rocking model does not hold"),
                        no_value, waiting])
     if field == "broken":
         br = sc["broken"]
         return Layers([(computed & (br == 0), SAFE_COLOUR, "no spring broke"),
-                       (computed & (br == 1), "#66a61e", r"left spring broke ($\theta > 0$)"),
-                       (computed & (br == 2), "#7570b3", r"right spring broke ($\theta < 0$)"),
-                       (computed & (br == 3), "#d95f02", "both broke"),
+                       (computed & (br == 1), rsplot.OKABE_ITO["green"], r"left spring broke ($\theta > 0$)"),
+                       (computed & (br == 2), rsplot.OKABE_ITO["purple"], r"right spring broke ($\theta < 0$)"),
+                       (computed & (br == 3), rsplot.OKABE_ITO["vermillion"], "both broke"),
                        no_value, waiting])
     value = sc[field].astype(float)
     cats = [no_value, waiting]
@@ -132,14 +133,18 @@ def diff_layers(sa, sb, name_a, name_b):
         return "{} cells, {:.1f} %".format(int(np.count_nonzero(mask)), 100.0 * np.count_nonzero(mask) / n)
 
     saves, loses = valid & ~up_a & up_b, valid & up_a & ~up_b
+    # Okabe-Ito blue / vermillion for the two differences (not red / green); the two greys for
+    # what both do are dark enough to stand apart from the white page.
+    saved_words = "{} saves the block ({})".format(name_b, share(saves))
+    lost_words = "{} loses the block ({})".format(name_b, share(loses))
     return Layers([
-        (valid & up_a & up_b, SAFE_COLOUR, "safe in both"),
-        (valid & ~up_a & ~up_b, "#969696", "overturns in both"),
-        (saves, "#1a9850", "{} saves the block ({})".format(name_b, share(saves))),
-        (loses, "#d73027", "{} loses the block ({})".format(name_b, share(loses))),
+        (valid & up_a & up_b, "#dedede", "safe in both"),
+        (valid & ~up_a & ~up_b, "#8c8c8c", "overturns in both"),
+        (saves, rsplot.OKABE_ITO["blue"], saved_words),
+        (loses, rsplot.OKABE_ITO["vermillion"], lost_words),
         (both_done & ~valid, "#000000", "not converged in either"),
         (~both_done, PENDING_COLOUR, "not yet computed"),
-    ])
+    ], always=(saved_words, lost_words))  # "0 cells" is a finding too
 
 
 def draw(ax, S, layers, norm=None, cmap=None):
@@ -231,9 +236,11 @@ def header(S, what):
     if family in ("n-sine", "cycloidal-c") and cycles:
         family += " (n = {})".format(int(cycles))
     pulses = "{} pulses".format(family)
+    if "phase_rad" not in S.get("axes", []) and a.get("phase_rad"):  # a phase not the paper's 0
+        pulses += r", phase $\psi = {}$".format(rsplot.pi_fraction(a["phase_rad"]))
     if "pulse_family" in S.get("axes", []):  # each panel or point names its own
         pulses = "pulse families" + (" (n = {})".format(int(cycles)) if cycles and cycles > 1 else "")
-    head = "{}: {}, {}\n{}".format(
+    head = "{}: {}\n{}, {}".format(
         "Overturning spectra" if what == "outcome" else "Spectra",
         what,
         pulses,
@@ -249,7 +256,7 @@ def legend(legend_ax, layers_list, ncols):
     seen = {}
     for layers in layers_list:
         for mask, colour, label in layers.cats:
-            if (np.any(mask) or label in ALWAYS_LISTED) and label != NO_ANCHORAGE:  # that panel says so itself
+            if (np.any(mask) or label in ALWAYS_LISTED or label in layers.always) and label != NO_ANCHORAGE:  # that panel says so itself
                 seen.setdefault(label, colour)
     handles = [Patch(facecolor=c, edgecolor="#666666", label=lab,
                      hatch=PENDING_HATCH if c == PENDING_COLOUR else None) for lab, c in seen.items()]
@@ -286,10 +293,10 @@ def plot_diff(S, name_a, name_b, at, out):
     layers = diff_layers(a.sc, b.sc, titles[name_a], titles[name_b])
     fig, axes, legend_ax = figure(S, 1, [(a.p, a.alpha)])
     draw(axes[0], S, layers)
-    axes[0].set_title("{}  versus  {}".format(titles[name_b], titles[name_a]))
+    axes[0].set_title("B: {}\nagainst A: {}".format(titles[name_b], titles[name_a]))
     legend(legend_ax, [layers], 1)
     where = "\nat " + point_words(S, at) if at else ""
-    fig.suptitle(header(S, "where one anchorage saves the block and where it loses it") + where, fontsize=11)
+    fig.suptitle(header(S, "where anchorage B saves the block that A loses, and the reverse") + where, fontsize=11)
     return rsplot.save(fig, out)
 
 

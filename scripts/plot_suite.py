@@ -12,7 +12,8 @@ OUT_overturning.png/.pdf  first overturning PGA [g] of each record against the b
                           against the slenderness alpha when the file holds several alphas and
                           one R;
                           open markers: records that stand again at some higher level
-                          (safe_above = 1); triangles at the top: records that never overturn.
+                          (safe_above = 1); a grey triangle at the top level with the number
+                          of records that never overturn at that size.
                           With a single R: each record's first overturning PGA against its
                           name, the bar reaching down to the PGA of the level below it.
 OUT_ida.png/.pdf          IDA curves at one R (--radius, default the configured block's): theta_max/alpha
@@ -38,17 +39,20 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import read_suite  # noqa: E402
 import rsplot  # noqa: E402
 from plot_spectra import scenario_titles  # noqa: E402
-from rsplot import plt  # noqa: E402
 
 ROTATION_CAP = 1.05          # theta_max/alpha beyond this (a block that stands) is drawn at the cap
 STRIP = (1.12, 1.3)          # the "overturned" strip of the IDA plot: each record a lane in it
-LINESTYLES = ("-", "--", ":", "-.")
 SCENARIO_MARKERS = ("o", "s", "D", "^", "v", "P", "X", "*")
+# Fits of several scenarios can coincide: each its own dash pattern and width, the first widest,
+# so that one drawn over another still shows.
+FIT_STYLES = (("-", 3.2), ((0, (6, 2)), 2.2), ((0, (1.5, 1.5)), 1.8), ("-.", 1.4))
+DODGE = 0.012  # records' markers and lines side by side: this fraction of the x range apart
 
 
 def record_style(i):
-    """Colour and line style of record i: the same in every figure and panel."""
-    return rsplot.run_colour(i), LINESTYLES[(i // len(rsplot.RUN_COLOURS)) % len(LINESTYLES)]
+    """Colour and line style of record i, the same in every figure and panel: the seven
+    Okabe-Ito colours (no yellow), then again dashed, dotted..."""
+    return rsplot.run_style(i)
 
 
 def scenario_colour(S, name):
@@ -82,7 +86,7 @@ def block_at(S, radius):
     if not a.get("radius_m"):
         return "R = {:g} m".format(radius)
     k = radius / a["radius_m"]
-    return "R = {:g} m: {}".format(radius, rsplot.block_words(
+    return "R = {:.3g} m: {}".format(radius, rsplot.block_words(
         radius * math.sin(alpha), radius * math.cos(alpha), alpha, a["p_rad_s"] / math.sqrt(k)))
 
 
@@ -117,27 +121,6 @@ def suite_words(S):
     if a.get("complete") != 1:
         words += "\npartial file: {} of {} runs computed".format(a.get("n_done"), a.get("n_cells"))
     return words
-
-
-def panels(n, width=11.0, height=4.6, ncols=None, sharey=True, legend_width=0.55):
-    """A figure of n panels (up to 3 a row, or ncols) and a legend column on the right (none if
-    legend_width is None). Returns (fig, panel axes, legend axis or None)."""
-    ncols = ncols or min(n, 3)
-    nrows = int(math.ceil(n / ncols))
-    fig = plt.figure(figsize=(width, height * nrows + 1.0), layout="constrained")
-    if legend_width is None:
-        grid = fig.add_gridspec(nrows, ncols)
-    else:
-        grid = fig.add_gridspec(nrows, ncols + 1, width_ratios=[1.0] * ncols + [legend_width])
-    axes = []
-    for k in range(n):
-        share = axes[0] if sharey and axes else None
-        axes.append(fig.add_subplot(grid[k // ncols, k % ncols], sharey=share))
-    if legend_width is None:
-        return fig, axes, None
-    legend_ax = fig.add_subplot(grid[:, ncols])
-    legend_ax.axis("off")
-    return fig, axes, legend_ax
 
 
 def record_legend(names):
@@ -190,22 +173,32 @@ def plot_overturning(S, names, out):
     top = S["records"]["pga_scaled_g"][..., -1]
     if top.ndim > 1:   # across alpha: the top level's PGA of each record, the largest over alpha
         top = top.max(axis=1)
-    fig, axes, legend_ax = panels(len(names), height=4.8 if len(radii) > 1 else 5.6)
-    ymax = 1.1 * max(np.nanmax(top), 1e-9)
+    fig, axes, legend_ax = rsplot.panels(len(names), height=4.8 if len(radii) > 1 else 5.6)
+    top_level = float(np.nanmax(top))
+    span = (radii[-1] - radii[0]) if len(radii) > 1 else float(len(recs))
+    dodge = (np.arange(len(recs)) - (len(recs) - 1) / 2) * DODGE * span   # records side by side
+    highest, any_above = 0.0, False
     for ax, name, title in zip(axes, names, scenario_titles(S, names)):
         ov = S["scenarios"][name]["overturning"]
         first, safe_above = ov["first_pga_g"], ov["safe_above"] != 0
         never = np.isnan(first)
+        highest = max(highest, float(np.nanmax(first, initial=0.0)))
         if len(radii) > 1:
-            x = np.broadcast_to(radii, first.shape)
+            x = radii[None, :] + dodge[:, None]
             for i in range(len(recs)):
                 colour, ls = record_style(i)
-                ax.plot(radii, first[i], color=colour, ls=ls, lw=1.0, alpha=0.85)
-            draw_markers(ax, x, first, safe_above, never, top)
+                ax.plot(x[i], first[i], color=colour, ls=ls, lw=1.0, alpha=0.85)
+            draw_markers(ax, x, first, safe_above)
+            draw_never(ax, radii, never, top_level)
             med = suite_median(first)
             ax.plot(radii, med, color="k", lw=3.0, marker="o", ms=6, zorder=5)
-            # Linear R with plain ticks: the sizes are evenly spaced, and their full digits would
-            # run into each other; how many records never overturn is read off the triangles.
+            # Where more than half never overturn the median is above the top level: say so
+            # there rather than end the line.
+            above = np.isnan(med)
+            any_above |= bool(above.any())
+            if above.any():
+                ax.plot(radii[above], np.full(np.count_nonzero(above), top_level), "k^", ms=11, mfc="white", mew=2,
+                        zorder=6)
             ax.set_xlabel(r"slenderness $\alpha$ = atan(b/h) [rad]" if slender else "block size R [m]")
         else:
             below = level_pga(S, ov["below_intensity"])[:, 0]
@@ -215,28 +208,37 @@ def plot_overturning(S, names, out):
                     lo = below[i] if np.isfinite(below[i]) else 0.0
                     ax.plot([i, i], [lo, first[i, 0]], color=record_style(i)[0], lw=4, alpha=0.45,
                             solid_capstyle="butt")
-            draw_markers(ax, x[:, None], first, safe_above, never, top)
+            draw_markers(ax, x[:, None], first, safe_above)
+            ax.plot(x[never[:, 0]], np.full(np.count_nonzero(never[:, 0]), top_level), "^", color="0.3", ms=8, ls="")
             med = suite_median(first)[0]
             if np.isfinite(med):
                 ax.axhline(med, color="k", lw=2.5)
             ax.set_xticks(x, recs, rotation=60, ha="right", fontsize=8)
+            ax.set_xlim(-0.7, len(recs) - 0.3)
             ax.set_xlabel("record")
         ax.set_title(title)
-        ax.set_ylim(0, ymax)
+    # The y axis to what is drawn: the top level only where a record never overturns there.
+    any_never = any(np.isnan(S["scenarios"][nm]["overturning"]["first_pga_g"]).any() for nm in names)
+    axes[0].set_ylim(0, 1.12 * (max(highest, top_level) if any_never else highest) or 1.0)  # markers whole
     axes[0].set_ylabel("first overturning PGA [g]")
     handles = [
         Line2D([], [], color="k", lw=3.0 if len(radii) > 1 else 2.5, label="suite median"),
         Line2D([], [], color="0.3", marker="o", ls="", label="first overturning level"),
         Line2D([], [], color="0.3", marker="o", mfc="white", ls="", label="stands again at a higher level (safe_above)"),
-        Line2D([], [], color="0.3", marker="^", ls="", label="never overturns (PGA of the top level)"),
     ]
+    if any_never:
+        handles.append(Line2D([], [], color="0.3", marker="^", ls="", label="never overturns up to the top level"
+                              + (" (number of records)" if len(radii) > 1 else "")))
+    if any_above:
+        handles.insert(1, Line2D([], [], color="k", marker="^", mfc="white", mew=2, ms=9, ls="",
+                                 label="median above the top level"))
     if len(radii) > 1:
         handles += record_legend(recs)
     else:
         handles.insert(1, Line2D([], [], color="0.5", lw=4, alpha=0.45, label="PGA of the level below to the first"))
     legend_ax.legend(handles=handles, loc="center left", fontsize=8, frameon=False)
     if slender:
-        where = "{} slendernesses α = {:.3g} to {:.3g} rad at R = {:.4g} m".format(
+        where = "{} slendernesses α = {:.3g} to {:.3g} rad at R = {:.3g} m".format(
             len(radii), radii[0], radii[-1], S["radius_m"][0])
     elif len(radii) == 1:
         where = "block " + block_at(S, radii[0])
@@ -247,14 +249,24 @@ def plot_overturning(S, names, out):
     return rsplot.save(fig, out)
 
 
-def draw_markers(ax, x, first, safe_above, never, top):
-    """Filled: a plain first level; open: safe_above; triangle at the record's top PGA: never."""
+def draw_markers(ax, x, first, safe_above):
+    """Filled: a plain first level; open: safe_above (records that never overturn: draw_never)."""
     for i in range(first.shape[0]):
         colour = record_style(i)[0]
-        plain = ~never[i] & ~safe_above[i]
+        plain = np.isfinite(first[i]) & ~safe_above[i]
         ax.plot(x[i][plain], first[i][plain], "o", color=colour, ms=5, ls="")
         ax.plot(x[i][safe_above[i]], first[i][safe_above[i]], "o", mfc="white", mec=colour, mew=1.6, ms=7, ls="")
-        ax.plot(x[i][never[i]], np.full(np.count_nonzero(never[i]), top[i]), "^", color=colour, ms=7, ls="")
+
+
+def draw_never(ax, x, never, top_level):
+    """One grey triangle per size at the top level with the number of records that never
+    overturn there (one triangle per record would print them all on one spot)."""
+    counts = never.sum(axis=0)
+    some = counts > 0
+    ax.plot(x[some], np.full(np.count_nonzero(some), top_level), "^", color="0.3", ms=8, ls="", zorder=7)
+    for xi, n in zip(x[some], counts[some]):
+        ax.annotate(str(int(n)), (xi, top_level), xytext=(0, 7), textcoords="offset points", ha="center",
+                    fontsize=8, color="0.2")
 
 
 # --------------------------------------------------------------------------- IDA
@@ -263,7 +275,7 @@ def draw_markers(ax, x, first, safe_above, never, top):
 def plot_ida(S, names, j, out):
     recs = S["records"]["names"]
     levels = S["intensity"]
-    fig, axes, legend_ax = panels(len(names), height=4.8)
+    fig, axes, legend_ax = rsplot.panels(len(names), height=4.8)
     for ax, name, title in zip(axes, names, scenario_titles(S, names)):
         sc = S["scenarios"][name]
         out_, rot, done = sc["outcome"][:, j], sc["max_rotation"][:, j], sc["done"][:, j] == 1
@@ -289,8 +301,9 @@ def plot_ida(S, names, j, out):
     axes[0].set_ylabel(intensity_label(S))
     axes[0].set_ylim(0, levels[-1] * 1.03)
     legend_ax.legend(handles=record_legend(recs), loc="center left", fontsize=8, frameon=False)
-    fig.suptitle(r"IDA curves of the record suite ($\theta_{{max}}/\alpha$ above {:g} drawn at {:g})" "\nblock {}; {}".format(
-        ROTATION_CAP, ROTATION_CAP, block_at(S, S["radius_m"][j]), suite_words(S)), fontsize=11)
+    fig.suptitle(r"IDA curves of the record suite: $\theta_{{max}}/\alpha$ of each run, capped at {:g}; runs that "
+                 "overturned in the grey strip, one lane per record\nblock {}; {}".format(
+                     ROTATION_CAP, block_at(S, S["radius_m"][j]), suite_words(S)), fontsize=11)
     return rsplot.save(fig, out)
 
 
@@ -298,12 +311,13 @@ def plot_ida(S, names, j, out):
 
 
 def fit_label(words, fr, s, j, unit):
+    """The fit in words: 'median' (not theta-hat: theta is the rotation here) and beta."""
     status = fr["fit_status_names"][s, j]
     med, beta = fr["median_intensity"][s, j], fr["beta"][s, j]
     if status == "ok":
-        return r"{}: $\hat\theta$ = {:.3g}{}, $\hat\beta$ = {:.2f}".format(words, med, unit, beta)
+        return r"{}: median {:.3g}{}, $\beta$ = {:.2f}".format(words, med, unit, beta)
     if status == "zero_dispersion" and np.isfinite(med):
-        return r"{}: step at {:.3g}{} ($\beta$ = 0, dashed)".format(words, med, unit)
+        return r"{}: step at {:.3g}{} ($\beta$ = 0)".format(words, med, unit)
     return "{}: no fit ({})".format(words, status.replace("_", " "))
 
 
@@ -312,24 +326,30 @@ def plot_fragility(S, names, j, out):
     frs = [S["scenarios"][nm]["fragility"] for nm in names]
     states = frs[0]["states"]
     order = sorted(range(len(states)), key=lambda s: (not np.isnan(frs[0]["rotation_ratios"][s]), s))
-    fig, axes, _ = panels(len(states), width=11.0, height=4.6, ncols=2, legend_width=None)
+    fig, axes, _ = rsplot.panels(len(states), width=11.0, height=4.6, ncols=2, legend_width=None)
     x = np.linspace(levels[0] * 0.5, levels[-1] * 1.02, 400)
     unit = intensity_unit_words(S)
     words = scenario_titles(S, names)
     spread = 0.006 * (levels[-1] - levels[0])
+    # Wilson bars at every n-th level only, each scenario on its own levels (staggered): with
+    # every bar of every scenario the panel is a forest.
+    every = max(2 * len(names), int(math.ceil(len(levels) / 6)))
     for ax, s in zip(axes, order):
         for k, (fr, w, nm) in enumerate(zip(frs, words, names)):
             colour = scenario_colour(S, nm)
-            off = (k - (len(names) - 1) / 2) * spread   # side by side, so the bars do not hide each other
+            off = (k - (len(names) - 1) / 2) * spread   # side by side, so the points do not hide each other
             f, lo, hi = fr["fraction"][s, j], fr["fraction_lo"][s, j], fr["fraction_hi"][s, j]
-            ax.errorbar(levels + off, f, yerr=[np.maximum(f - lo, 0), np.maximum(hi - f, 0)], fmt=SCENARIO_MARKERS[k % len(SCENARIO_MARKERS)],
-                        color=colour, ms=4, lw=0.8, capsize=2, alpha=0.9)
+            marker = SCENARIO_MARKERS[k % len(SCENARIO_MARKERS)]
+            ax.plot(levels + off, f, marker, color=colour, ms=4.5, ls="", alpha=0.9, clip_on=False)
+            bars = np.arange(len(levels)) % every == (k * every // len(names)) % every
+            ax.errorbar((levels + off)[bars], f[bars], yerr=[np.maximum(f - lo, 0)[bars], np.maximum(hi - f, 0)[bars]],
+                        fmt="none", ecolor=colour, lw=1.0, capsize=3, alpha=0.9)
             status = fr["fit_status_names"][s, j]
             y = read_suite.fragility_curve(x, fr["median_intensity"][s, j], fr["beta"][s, j])
             drawn = status in ("ok", "zero_dispersion") and np.isfinite(y).any()
-            ls = ("-" if status == "ok" else "--") if drawn else ""
-            ax.plot(x if drawn else [], y if drawn else [], color=colour, ls=ls, lw=2,
-                    label=fit_label(w, fr, s, j, unit))
+            ls, lw = FIT_STYLES[k % len(FIT_STYLES)]
+            ax.plot(x if drawn else [], y if drawn else [], color=colour, ls=ls, lw=lw, label=fit_label(w, fr, s, j, unit),
+                    marker=marker, markevery=[], zorder=3 + 0.1 * k)  # the thinner on top
         state = states[s]
         ax.set_title("overturning" if state == "overturning" else
                      r"$\theta_{{max}}/\alpha \geq$ {:g}".format(frs[0]["rotation_ratios"][s]))
@@ -338,8 +358,8 @@ def plot_fragility(S, names, j, out):
         ax.set_xlabel(intensity_label(S))
         ax.set_ylabel("P(state reached) [–]")
         ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.15), fontsize=8, frameon=False)
-    fig.suptitle("Fragility of the block under the record suite: fraction of records reaching each state "
-                 "(Wilson 95 % bars) and lognormal MLE fit\nblock {}; {}".format(
+    fig.suptitle("Fragility under the record suite\nmarkers: fraction of records reaching the state (Wilson 95 % "
+                 "bars at every {}th level); lines: lognormal MLE fit\nblock {}; {}".format(every,
                      block_at(S, S["radius_m"][j]), suite_words(S)), fontsize=11)
     return rsplot.save(fig, out)
 

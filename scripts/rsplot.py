@@ -1,12 +1,12 @@
-"""Shared pieces of rocksweep's plotting scripts: reading histories (HDF5 or CSV), describing
-blocks, pulses and scenarios in words, and writing each figure as PNG and PDF.
+"""Shared pieces of rocksweep's plotting scripts, for every figure: the style (Okabe-Ito colours,
+fonts, resolution), command lines, words for blocks, pulses, anchorages and angles (pi_fraction),
+legend labels that wrap, panel grids, the spectra's secondary axes, and writing each figure as
+PNG and PDF.
 
-Spectra files are read by read_spectra.py (the one place that knows their layout); this
-module reads history files (docs/hdf5.md, "History file"), defensively: a dataset or
-attribute that is missing is simply absent, and datasets it does not know are kept too.
+Spectra files are read by read_spectra.py, suite files by read_suite.py, histories by
+rshistory.py.
 """
 import argparse
-import csv
 import math
 import os
 import sys
@@ -39,12 +39,67 @@ plt.rcParams.update(
     }
 )
 
-# One colour per run, the same in every panel (colour-blind safe, Okabe-Ito).
-RUN_COLOURS = ["#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#000000", "#F0E442"]
+# The Okabe-Ito palette (Okabe & Ito 2008, "Color Universal Design"), safe for the common
+# colour-vision deficiencies: every figure takes its colours from here. Yellow is left out of
+# the run colours: on white it is barely visible as a line.
+OKABE_ITO = {"blue": "#0072B2", "vermillion": "#D55E00", "green": "#009E73", "purple": "#CC79A7",
+             "orange": "#E69F00", "sky": "#56B4E9", "black": "#000000", "yellow": "#F0E442"}
+# One colour per run, the same in every panel.
+RUN_COLOUR_NAMES = ("blue", "vermillion", "green", "purple", "orange", "sky blue", "black")
+RUN_COLOURS = [OKABE_ITO[k.split()[0] if k != "sky blue" else "sky"] for k in RUN_COLOUR_NAMES]
+# Beyond seven runs the colours come back with these line styles (run i: colour i % 7, style i // 7).
+RUN_STYLES = ["-", "--", ":", "-."]
 
 
 def run_colour(i):
     return RUN_COLOURS[i % len(RUN_COLOURS)]
+
+
+def run_style(i):
+    """(colour, line style) of run i: distinct for 28 runs."""
+    return run_colour(i), RUN_STYLES[(i // len(RUN_COLOURS)) % len(RUN_STYLES)]
+
+
+def pi_fraction(x, tol=1e-6):
+    """An angle [rad] as mathtext in multiples of π where it is one (0, π/4, π/2, 3π/4, π,
+    2π/3, ...; denominators up to 12), else as a decimal in rad."""
+    if abs(x) < tol:
+        return "0"
+    r = x / math.pi
+    for d in (1, 2, 3, 4, 6, 8, 12):
+        n = round(r * d)
+        if n and abs(r * d - n) < tol * d:
+            sign = "-" if n < 0 else ""
+            n = abs(n)
+            num = r"\pi" if n == 1 else r"{}\pi".format(n)
+            return sign + (num if d == 1 else num + "/{}".format(d))
+    return "{:.4g}".format(x)
+
+
+def wrap_label(label, width=60):
+    """Breaks a legend label of comma-separated parts into lines of about `width` characters,
+    only at ', ' outside mathtext ($...$), so that a legend never grows wider than its figure."""
+    parts, current, dollars = [], "", 0
+    pieces = label.split(", ")
+    for k, piece in enumerate(pieces):
+        current += piece
+        dollars += piece.count("$")
+        if k < len(pieces) - 1:
+            if dollars % 2:  # inside mathtext: keep the comma
+                current += ", "
+                continue
+            parts.append(current + ",")
+            current = ""
+    parts.append(current)
+    lines, line = [], ""
+    for part in parts:
+        if line and len(line) + 1 + len(part) > width:
+            lines.append(line)
+            line = part
+        else:
+            line = (line + " " + part) if line else part
+    lines.append(line)
+    return "\n".join(lines)
 
 
 # --------------------------------------------------------------------------- command lines
@@ -61,14 +116,6 @@ def parser(description, inputs_help, n_inputs="+"):
         metavar="OUT",
         help="output name: OUT.png and OUT.pdf are written (a .png or .pdf suffix is dropped)",
     )
-    return p
-
-
-def history_parser(description):
-    """The command line of the scripts that draw histories: HISTORY... -o OUT [--alpha] [--title]."""
-    p = parser(description, "history files (.h5 or .csv)")
-    p.add_argument("--alpha", type=float, help="alpha [rad] for CSV histories (HDF5 files carry their own)")
-    p.add_argument("--title", help="figure title (default: the block and the excitation the runs share)")
     return p
 
 
@@ -92,6 +139,27 @@ def save(fig, out):
     return paths
 
 
+def panels(n, width=11.0, height=4.6, ncols=None, sharey=True, legend_width=0.55):
+    """A figure of n panels (up to 3 a row, or ncols) and a legend column on the right (none if
+    legend_width is None). Returns (fig, panel axes, legend axis or None)."""
+    ncols = ncols or min(n, 3)
+    nrows = int(math.ceil(n / ncols))
+    fig = plt.figure(figsize=(width, height * nrows + 1.0), layout="constrained")
+    if legend_width is None:
+        grid = fig.add_gridspec(nrows, ncols)
+    else:
+        grid = fig.add_gridspec(nrows, ncols + 1, width_ratios=[1.0] * ncols + [legend_width])
+    axes = []
+    for k in range(n):
+        share = axes[0] if sharey and axes else None
+        axes.append(fig.add_subplot(grid[k // ncols, k % ncols], sharey=share))
+    if legend_width is None:
+        return fig, axes, None
+    legend_ax = fig.add_subplot(grid[:, ncols])
+    legend_ax.axis("off")
+    return fig, axes, legend_ax
+
+
 # --------------------------------------------------------------------------- words
 
 
@@ -111,9 +179,10 @@ def alpha_fraction(r):
     return r"{:g}\,\alpha".format(r)
 
 
-def anchorage_words(attrs):
+def anchorage_words(attrs, with_law=False):
     """A scenario's or history's anchorage in words (mathtext), from its attributes
-    `anchorage`, `theta_f_ratio`, `kmin_ratio`, `break_rule`."""
+    `anchorage`, `theta_f_ratio`, `kmin_ratio`, `break_rule`, `adaptive_law` (named when it is
+    not the paper's, or always with `with_law`)."""
     kind = attrs.get("anchorage", "")
     if kind == "free":
         return "free-standing"
@@ -128,6 +197,11 @@ def anchorage_words(attrs):
             words += ", " + theta_f
         if attrs.get("break_rule") == "force":
             words += ", breaks at $F_u$"
+        # --adaptive-law: the paper's law is the default and unnamed elsewhere; say it when asked
+        # (with_law) so that runs differing by the law alone read differently.
+        law = attrs.get("adaptive_law")
+        if law == "passive" or (with_law and law):
+            words += ", {} law".format("paper's" if law == "paper" else law)
         return words
     return kind or "anchorage not recorded"
 
@@ -142,161 +216,6 @@ def block_words(b=None, h=None, alpha=None, p=None):
     if p is not None:
         parts.append("p = {:.4g} rad/s".format(p))
     return ", ".join(parts)
-
-
-# --------------------------------------------------------------------------- histories
-
-HISTORY_COLUMNS = {  # CSV header name -> dataset name (docs/hdf5.md)
-    "t_s": "t",
-    "theta_rad": "theta",
-    "theta_dot_rad_s": "theta_dot",
-    "k_left_N_m": "k_left",
-    "k_right_N_m": "k_right",
-    "ground_acc_m_s2": "ground_acc",
-    "w_excitation_J": "w_excitation",
-    "w_anchorage_J": "w_anchorage",
-}
-
-
-def config_values(config_text):
-    """The `key=value` lines of an effective config (the `config` attribute) as a dict of
-    strings, quotes removed; '' for values that were not set."""
-    values = {}
-    for line in config_text.splitlines():
-        if "=" in line:
-            key, _, value = line.partition("=")
-            values[key.strip()] = value.strip().strip('"')
-    return values
-
-
-def _float(v):
-    try:
-        return float(v)
-    except (TypeError, ValueError):
-        return None
-
-
-class History:
-    """One time history. `data[name]` holds every 1-D dataset found (t, theta, ...; unknown
-    ones too); `attrs` the file's attributes (empty for CSV). Derived, None when unknown:
-    alpha [rad], p [rad/s], g [m/s^2], b, h [m]."""
-
-    def __init__(self, path, alpha=None):
-        self.path = path
-        self.name = os.path.splitext(os.path.basename(path))[0]
-        self.attrs = {}
-        self.data = {}
-        if path.lower().endswith(".csv"):
-            self._read_csv(path)
-        else:
-            self._read_h5(path)
-        for required in ("t", "theta"):
-            if required not in self.data:
-                raise SystemExit("{}: no '{}' column/dataset: not a rocksweep history".format(path, required))
-        cfg = config_values(self.attrs.get("config", ""))
-        self.config = cfg
-        self.alpha = _float(self.attrs.get("alpha_rad")) or alpha
-        self.p = _float(self.attrs.get("p_rad_s"))
-        self.g = _float(cfg.get("gravity")) or STANDARD_GRAVITY
-        self.b = _float(cfg.get("half-width")) if not cfg.get("radius") else None
-        self.h = _float(cfg.get("half-height")) if not cfg.get("radius") else None
-
-    def _read_h5(self, path):
-        import h5py
-
-        with h5py.File(path, "r") as f:
-            self.attrs = {k: text(v) for k, v in f.attrs.items()}
-            for name, obj in f.items():
-                if isinstance(obj, h5py.Dataset) and obj.ndim == 1:
-                    self.data[name] = obj[()].astype(float)
-
-    def _read_csv(self, path):
-        with open(path, newline="") as fh:
-            rows = list(csv.reader(fh))
-        header = [HISTORY_COLUMNS.get(c.strip(), c.strip()) for c in rows[0]]
-        values = np.array([[float(x) for x in r] for r in rows[1:] if r], dtype=float)
-        values = values.reshape(-1, len(header))
-        for j, name in enumerate(header):
-            self.data[name] = values[:, j]
-
-    def has(self, name):
-        return name in self.data
-
-    @property
-    def t(self):
-        return self.data["t"]
-
-    def anchored(self):
-        """True if any spring ever worked."""
-        return any(self.has(k) and np.any(self.data[k] > 0) for k in ("k_left", "k_right"))
-
-    def k_max(self):
-        """The largest working stiffness recorded (K_max of an adaptive anchorage: a block
-        lifts with K_max), or None for a free block."""
-        ks = [np.max(self.data[k]) for k in ("k_left", "k_right") if self.has(k)]
-        return max(ks) if ks and max(ks) > 0 else None
-
-    def excitation_words(self):
-        """The ground motion in words, '' if the file does not say."""
-        a = self.attrs
-        pulse = a.get("pulse")
-        ratio = _float(a.get("amplitude_ratio"))
-        if pulse == "sine":
-            return r"one-sine pulse $\omega_p/p$ = {:g}, $a_{{p0}}/(\alpha g)$ = {:g}".format(
-                a.get("omega_ratio"), ratio
-            )
-        if pulse == "constant":
-            words = r"constant acceleration $a/(\alpha g)$ = {:g}".format(ratio)
-            duration = _float(self.config.get("simulate.duration"))
-            return words + (" for {:.4f} s".format(duration) if duration else "")
-        if pulse == "record":
-            words = "record " + os.path.basename(a.get("record", "?"))
-            scale = _float(self.config.get("simulate.record-scale"))
-            return words + (" × {:g}".format(scale) if scale not in (None, 1.0) else "")
-        return ""
-
-    def block_words(self):
-        return block_words(self.b, self.h, self.alpha, self.p)
-
-    def outcome_words(self):
-        outcome = self.attrs.get("outcome")
-        if outcome is None:
-            return ""
-        words = outcome.replace("_", " ")
-        t_over = _float(self.attrs.get("t_overturn"))
-        if t_over is not None and math.isfinite(t_over):
-            words += " at {:.2f} s".format(t_over)
-        return words
-
-
-def run_labels(histories):
-    """One label per run: its anchorage, plus whatever else differs between the runs (the
-    excitation, the file), plus its outcome. Returns (labels, common) where `common` lists
-    what all runs share (block, excitation), for the title."""
-    anch = [anchorage_words(h.attrs) if h.attrs else "" for h in histories]
-    exc = [h.excitation_words() for h in histories]
-    blk = [h.block_words() for h in histories]
-    names = [h.name for h in histories]
-    labels = []
-    for i, h in enumerate(histories):
-        parts = [anch[i]] if anch[i] else []
-        if len(set(exc)) > 1 and exc[i]:
-            parts.append(exc[i])
-        if len(set(blk)) > 1 and blk[i]:
-            parts.append(blk[i])
-        if h.outcome_words():
-            parts.append(h.outcome_words())
-        labels.append(", ".join(parts))
-    repeated = {label for label in labels if labels.count(label) > 1}
-    for i, label in enumerate(labels):
-        if not label or label in repeated:  # nothing recorded, or twice the same: name the file
-            labels[i] = names[i] + (": " + label if label else "")
-    common = []
-    if len(set(blk)) == 1 and blk[0]:
-        common.append("block " + blk[0])
-    if len(set(exc)) == 1 and exc[0]:
-        common.append(exc[0])
-    return labels, common
 
 
 # --------------------------------------------------------------------------- spectra helpers

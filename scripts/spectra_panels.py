@@ -33,6 +33,8 @@ def value_words(S, name, i):
     if "flag_meanings" in attrs:
         meaning = dict(zip(np.atleast_1d(attrs["flag_values"]).tolist(), attrs["flag_meanings"].split()))
         return "{} pulses".format(meaning.get(float(S[name][i]), S[name][i]))
+    if name in ANGLES:  # phases read as fractions of pi: psi = pi/4, not 0.7854 rad
+        return "{} = ${}$".format(AXIS_SYMBOLS[name], rsplot.pi_fraction(float(S[name][i])))
     return "{} = {:.4g}{}".format(AXIS_SYMBOLS.get(name, name), S[name][i], AXIS_UNITS.get(name, ""))
 
 
@@ -43,6 +45,7 @@ def point_words(S, at):
 AXIS_SYMBOLS = {"phase_rad": "ψ", "vertical_g": "a_v0/g", "vertical_phase_rad": "ψ_v", "restitution": "e",
                 "radius_m": "R", "alpha_rad": "α", "strength_ratio": "F_u/(mg)", "theta_f_ratio": "θ_f/α",
                 "kmin_ratio": "K_min/K_max", "stiffness_n_m": "K"}
+ANGLES = ("phase_rad", "vertical_phase_rad")
 AXIS_UNITS = {"phase_rad": " rad", "vertical_phase_rad": " rad", "radius_m": " m", "alpha_rad": " rad", "stiffness_n_m": " N/m"}
 CONFIGURED = {"phase_rad": "phase_rad", "vertical_g": "vertical_g", "vertical_phase_rad": "vertical_phase_rad",
               "restitution": "e", "radius_m": "radius_m", "alpha_rad": "alpha_rad"}
@@ -91,6 +94,9 @@ SWEPT_ATTRS = {"theta_f_ratio": ["theta_f_ratio"], "stiffness_n_m": ["theta_f_ra
 
 def scenario_titles(S, names):
     swept = {k for axis in S.get("axes", [])[:-2] for k in SWEPT_ATTRS.get(axis, [])}  # (suite files: none)
-    titles = [rsplot.anchorage_words({k: v for k, v in S["scenarios"][nm]["attrs"].items() if k not in swept})
+    laws = {S["scenarios"][nm]["attrs"].get("adaptive_law") for nm in names
+            if S["scenarios"][nm]["attrs"].get("anchorage") == "adaptive"}
+    titles = [rsplot.anchorage_words({k: v for k, v in S["scenarios"][nm]["attrs"].items() if k not in swept},
+                                     with_law=len(laws) > 1)
               for nm in names]
     return [t + ("  [{}]".format(nm) if titles.count(t) > 1 else "") for t, nm in zip(titles, names)]

@@ -133,6 +133,9 @@ void add_model_options(CLI::App& app, Options& o) {
         ->check(one_of({"events", "paper"}))->capture_default_str()->group(num);
     app.add_option("--steps-per-period", n.steps_per_period, "Accuracy: RK4 steps per period of the cell's fastest time scale (simulate: 384 unless given)")
         ->check(number_in(4, 1e5, none))->capture_default_str()->group(num);
+    app.add_option("--tolerance", n.tolerance, "Under records: each step's local error in theta / alpha and theta_dot / (p alpha), "
+                   "from which the step is chosen (simulate: 1e-9 unless given); 0: --steps-per-period's fixed step")
+        ->check(number_in(0, 1e-2, none))->capture_default_str()->group(num);
     app.add_option("--paper-dt", n.paper_dt_s, "Step of the paper's method [s]")
         ->check(number_in(1e-7, 0.1, "s"))->capture_default_str()->group(num);
     app.add_option("--impact-threshold", n.impact_threshold, "Impacts slower than this fraction of p alpha are settling (simulate: 1e-4 unless given)")
@@ -159,6 +162,11 @@ void use_history_defaults(CLI::App& app, NumericsOptions& n) {
     if (spp->count() == 0) {
         n.steps_per_period = kHistoryDefaults.steps_per_period;
         spp->default_str(format_number(n.steps_per_period));
+    }
+    CLI::Option* tol = app.get_option("--tolerance");
+    if (tol->count() == 0) {
+        n.tolerance = kHistoryDefaults.tolerance;
+        tol->default_str(format_number(n.tolerance));
     }
     CLI::Option* thr = app.get_option("--impact-threshold");
     if (thr->count() == 0) {

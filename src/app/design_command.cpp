@@ -22,10 +22,11 @@
 #include "rocksweep/app/design_risk.hpp"
 #include "rocksweep/app/option_checks.hpp"
 #include "rocksweep/app/run_support.hpp"
-#include "rocksweep/app/stored_options.hpp"
+#include "rocksweep/app/resume_check.hpp"
 #include "rocksweep/app/sweep_refinement.hpp"
 #include "rocksweep/io/output_claim.hpp"
 #include "rocksweep/io/run_inputs.hpp"
+#include "rocksweep/io/spectra_file.hpp"
 
 #ifndef ROCKSWEEP_VERSION
 #define ROCKSWEEP_VERSION "unknown"
@@ -251,6 +252,14 @@ DesignCurve curve_of(std::vector<Evaluation> e, bool with_theta_f, double near_o
     return c;
 }
 
+/// A design's files (output, rounds) always record their options; only how the work is cut up
+/// may change (a round's refinement is checked by its options, not by the round's attributes).
+void check_resumed_design(const std::string& path, const std::string& config_text) {
+    const std::string stored = read_provenance_config(path);
+    if (stored.empty()) throw InputError("output", path, "a file of a rocksweep design to resume (it is damaged or not one)");
+    check_resumed_config(path, stored, config_text, work_options());
+}
+
 /// Claims the design's output on rank 0 (the rounds claim their own files); an existing
 /// output, or the round files of an unfinished design for it, is refused unless --resume or
 /// --overwrite says what to do with it. Returns true when a resumed design is already complete.
@@ -273,10 +282,10 @@ bool claim_output(std::optional<OutputClaim>& claim, const SweepCommand& run, co
     if (!run.resume) return false;
     // A finished design has removed its rounds: it is complete if its options are these.
     if (claim->exists()) {
-        check_same_options(run.output, config_text, "design");
+        check_resumed_design(run.output, config_text);
         return true;
     }
-    if (std::filesystem::exists(round0)) check_same_options(round0, config_text, "design");
+    if (std::filesystem::exists(round0)) check_resumed_design(round0, config_text);
     return false;
 }
 

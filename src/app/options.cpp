@@ -157,6 +157,7 @@ IntegratorSettings make_settings(const NumericsOptions& o) {
     else if (o.method == "paper") s.method = Method::paper;
     else throw InputError("method", o.method, "one of events, paper");
     s.steps_per_period = o.steps_per_period;
+    s.tolerance = o.tolerance;
     s.paper_dt_s = o.paper_dt_s;
     s.max_steps = o.max_steps;
     s.energy_stop = !o.no_energy_stop;

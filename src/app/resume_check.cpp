@@ -38,15 +38,11 @@ std::vector<std::string> elements(const std::string& value) {
 
 Config parse(const std::string& text) {
     Config c;
-    std::istringstream in(text);
-    for (std::string line; std::getline(in, line);) {
-        const std::size_t eq = line.find(" = ");
-        if (eq == std::string::npos) continue;
-        std::string key = line.substr(0, eq);
+    for (const auto& [table_key, value] : config_values(text)) {
         // A command's own options carry its table ("sweep.pulse"): a merged file resumed by
         // sweep compares its pulse with sweep's.
-        if (const std::size_t dot = key.find('.'); dot != std::string::npos) key = key.substr(dot + 1);
-        c[key] = elements(line.substr(eq + 3));
+        const std::size_t dot = table_key.find('.');
+        c[dot == std::string::npos ? table_key : table_key.substr(dot + 1)] = elements(value);
     }
     return c;
 }
@@ -81,21 +77,40 @@ std::string shown(const std::vector<std::string>* v) {
 
 }  // namespace
 
+std::map<std::string, std::string> config_values(const std::string& text) {
+    std::map<std::string, std::string> values;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) {
+        const std::size_t eq = line.find(" = ");
+        if (line.empty() || line[0] == '[' || line[0] == '#' || eq == std::string::npos) continue;
+        values[line.substr(0, eq)] = line.substr(eq + 3);
+    }
+    return values;
+}
+
+const std::set<std::string>& work_options() {
+    static const std::set<std::string> work{"lanes", "chunk", "checkpoint-interval"};
+    return work;
+}
+
 const std::set<std::string>& resumable_freely() {
-    static const std::set<std::string> free{"lanes", "chunk", "checkpoint-interval", "part", "parts",
-                                            "refine", "refine-axes", "axis", "scenario",
-                                            "floor", "sa-period", "sa-damping"};
+    static const std::set<std::string> free = [] {
+        std::set<std::string> s = work_options();
+        s.insert({"part", "parts", "refine", "refine-axes", "axis", "scenario", "floor", "sa-period", "sa-damping"});
+        return s;
+    }();
     return free;
 }
 
-void check_resumed_config(const std::string& path, const std::string& stored, const std::string& now) {
+void check_resumed_config(const std::string& path, const std::string& stored, const std::string& now,
+                          const std::set<std::string>& free) {
     if (stored.empty()) return;
     const Config before = parse(stored), after = parse(now);
     std::set<std::string> keys;
     for (const auto& [k, v] : before) keys.insert(k);
     for (const auto& [k, v] : after) keys.insert(k);
     for (const std::string& key : keys) {
-        if (resumable_freely().count(key)) continue;
+        if (free.count(key)) continue;
         const auto b = before.find(key), a = after.find(key);
         const std::vector<std::string>* was = b == before.end() ? nullptr : &b->second;
         const std::vector<std::string>* is = a == after.end() ? nullptr : &a->second;

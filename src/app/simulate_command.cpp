@@ -44,6 +44,7 @@ int run_simulate(const Options& o, const SimulateCommand& cmd, const std::string
         std::vector<std::pair<std::string, double>> numbers{
             {"p_rad_s", m.p()}, {"alpha_rad", m.alpha}, {"e", m.e}, {"steps_per_period", settings.steps_per_period},
             {"impact_threshold", o.numerics.impact_threshold}, {"output_dt_s", o.single.output_dt_s}};
+        if (!o.single.record.empty()) numbers.emplace_back("tolerance", settings.tolerance);  // steps follow it under a record
         // Only what defined the run: a record-driven history carries no pulse, a free block no K ratios.
         const std::tuple<const char*, const char*, double> ratios[] = {
             {"omega_ratio", "omega-ratio", o.single.omega_ratio}, {"amplitude_ratio", "amplitude-ratio", o.single.amplitude_ratio},

@@ -4,13 +4,14 @@
 #include <span>
 #include <stdexcept>
 
+#include "result_columns.hpp"
 #include "rocksweep/io/hdf5.hpp"
 
 namespace rocksweep {
 
 namespace {
 
-constexpr std::int64_t format_version = 1;
+constexpr std::int64_t format_version = 2;  // 2: round -> search_round
 
 const char* const criterion_words =
     "fraction of the hazard (a pulse region: its area, trapezoid weights over the grid nodes; a record suite: "
@@ -50,7 +51,8 @@ void write_column(const h5::Group& g, const char* name, const std::vector<T>& v,
 void write_curve(const h5::Group& g, const DesignCurve& c, const h5::Dataset& scale, bool risk) {
     write_column(g, "safe_fraction", c.acceptable, scale, "1", "the criterion: acceptable share of the hazard region");
     write_column(g, "standing_fraction", c.standing, scale, "1", "share of the hazard region where the block does not overturn");
-    write_column(g, "round", c.round, scale, "1", "search round that evaluated the value (0: the coarse one)");
+    // Not `round`: a variable of that name is hidden by numpy's and xarray's .round().
+    write_column(g, "search_round", c.round, scale, "1", "search round that evaluated the value (0: the coarse one)");
     if (risk) {
         write_column(g, "annual_rate", c.rate, scale, "1/yr", "annual rate of the unacceptable state at the site (what the design minimises)");
         write_column(g, "annual_rate_overturning", c.standing_rate, scale, "1/yr", "annual rate of overturning at the site, limits ignored");
@@ -148,12 +150,7 @@ void write_contents(const h5::File& f, const DesignReport& r, const Provenance& 
         h5::write_attribute(g, "optimum_k_min_N_per_m", c.variable[c.optimum] * r.k_max_n_per_m);
         write_search(g, r.kmin_search, "kmin_ratio_range");
     }
-    const h5::Group g = f.create_group("provenance");
-    h5::write_attribute(g, "version", prov.version);
-    h5::write_attribute(g, "config", prov.config_text);
-    h5::write_attribute(g, "created_utc", prov.created_utc);
-    h5::write_attribute(g, "ranks", prov.ranks);
-    h5::write_attribute(g, "wall_s", prov.wall_s);
+    h5::write_attribute(io::write_provenance(f, prov), "ranks", prov.ranks);
 }
 
 }  // namespace

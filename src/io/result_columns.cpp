@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "rocksweep/core/errors.hpp"
+#include "rocksweep/records/fragility.hpp"
 
 namespace rocksweep::io {
 
@@ -83,6 +84,8 @@ std::vector<Setting> numerics_settings(const IntegratorSettings& s, double impac
         {"method", "method", to_string(s.method), 0.0, true},
         paper ? num("paper_dt_s", "paper-dt", s.paper_dt_s, format_number(s.paper_dt_s))
               : num("steps_per_period", "steps-per-period", s.steps_per_period, format_number(s.steps_per_period)),
+        // Files from before --tolerance had fixed steps under records too.
+        {"tolerance", "tolerance", format_number(s.tolerance), s.tolerance, false, "0"},
         num("max_steps", "max-steps", static_cast<double>(s.max_steps), std::to_string(s.max_steps)),
         // 1: a safe block is decided by energy after the excitation; 0: --no-energy-stop.
         num("energy_stop", "no-energy-stop", s.energy_stop ? 1.0 : 0.0, s.energy_stop ? "not given" : "given"),
@@ -198,17 +201,34 @@ void read_result_columns(const h5::Group& g, std::span<const GridAxis> axes, Swe
     read_column(g, "done", axes, r.done, first, mismatch);
 }
 
-h5::Group write_provenance(const h5::File& f, const Provenance& prov, const IntegratorSettings& settings) {
+h5::Group write_provenance(const h5::File& f, const Provenance& prov) {
     h5::Group g = f.create_group("provenance");
     h5::write_attribute(g, "version", prov.version);
     h5::write_attribute(g, "config", prov.config_text);
+    h5::write_attribute(g, "created_utc", prov.created_utc);
+    h5::write_attribute(g, "wall_s", prov.wall_s);
+    return g;
+}
+
+h5::Group write_provenance(const h5::File& f, const Provenance& prov, const IntegratorSettings& settings) {
+    h5::Group g = write_provenance(f, prov);
     h5::write_attribute(g, "method", to_string(settings.method));
     h5::write_attribute(g, "steps_per_period", settings.steps_per_period);
     h5::write_attribute(g, "paper_dt_s", settings.paper_dt_s);
-    h5::write_attribute(g, "created_utc", prov.created_utc);
     h5::write_attribute(g, "ranks", prov.ranks);
-    h5::write_attribute(g, "wall_s", prov.wall_s);
     return g;
+}
+
+void write_fit_status_flags(const h5::Dataset& ds, const std::string& long_name) {
+    std::vector<std::uint8_t> codes;
+    std::string names;
+    for (auto s = FitStatus::ok; s <= FitStatus::decreasing; s = static_cast<FitStatus>(static_cast<int>(s) + 1)) {
+        codes.push_back(static_cast<std::uint8_t>(s));
+        names += (names.empty() ? "" : " ") + to_string(s);
+    }
+    h5::write_attribute(ds, "long_name", long_name);
+    h5::write_attribute(ds, "flag_values", std::span<const std::uint8_t>(codes));
+    h5::write_attribute(ds, "flag_meanings", names);
 }
 
 void write_progress(const h5::Object& obj, const SweepResults& r) {

@@ -1,8 +1,9 @@
 #pragma once
-/// What every file of sweep results shares (spectra, suite): the result columns of a group of
-/// cells with their units and meanings, the block's and a scenario's attributes, and the
-/// numerical settings that shape results, each written and compared from one list so that a
-/// writer and its resume reader can never disagree. Private to rocksweep_io.
+/// What every file of sweep results shares (spectra, suite; risk copies a suite's fit status):
+/// the result columns of a group of cells with their units and meanings, the block's and a
+/// scenario's attributes, and the numerical settings that shape results, each written and
+/// compared from one list so that a writer and its resume reader can never disagree. Private
+/// to rocksweep_io.
 #include <functional>
 #include <span>
 #include <string>
@@ -64,9 +65,16 @@ void write_result_columns(const GridGroup& grid, const SweepResults& r, std::siz
 void read_result_columns(const h5::Group& g, std::span<const GridAxis> axes, SweepResults& r, std::size_t first,
                          const Mismatch& mismatch);
 
-/// /provenance: what produced the file (everything there may differ between two runs); returns
-/// the group, for a writer's own additions.
+/// /provenance: what produced the file (everything there may differ between two runs): version,
+/// config, created_utc, wall_s; returns the group, for a writer's own additions (ranks, where
+/// the run had them). Every file rocksweep writes but the basin's has it.
+h5::Group write_provenance(const h5::File& f, const Provenance& prov);
+/// The same with the ranks and the numerical settings, for a file of sweep results.
 h5::Group write_provenance(const h5::File& f, const Provenance& prov, const IntegratorSettings& settings);
+
+/// A dataset of FitStatus codes (the suite file's fit_status, and the risk file's copy of it):
+/// its long_name and the CF flag_values and flag_meanings, the codes and names of every status.
+void write_fit_status_flags(const h5::Dataset& ds, const std::string& long_name);
 
 /// Root attributes n_cells, n_done, complete.
 void write_progress(const h5::Object& obj, const SweepResults& r);

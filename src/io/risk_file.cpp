@@ -5,6 +5,7 @@
 #include <optional>
 #include <sstream>
 
+#include "result_columns.hpp"
 #include "rocksweep/core/errors.hpp"
 #include "rocksweep/io/grid_layout.hpp"
 #include "rocksweep/io/hdf5.hpp"
@@ -130,10 +131,7 @@ void write_scenario(const h5::Group& parent, const RiskReport& r, const Scenario
         put(("share_above_" + tag).c_str(), share_above, "1", "share of the rate from above the hazard curve's last point (extrapolated)");
     }
     const h5::Dataset st = grid.write_on<std::uint8_t>("fit_status", fr.fit_status, block);
-    const std::uint8_t flags[] = {0, 1, 2, 3, 4, 5};
-    h5::write_attribute(st, "long_name", "the suite's lognormal fit status (docs/fragility.md); rate_fit is NaN unless ok or zero_dispersion");
-    h5::write_attribute(st, "flag_values", std::span<const std::uint8_t>(flags));
-    h5::write_attribute(st, "flag_meanings", "ok none_reached all_reached zero_dispersion not_identifiable decreasing");
+    io::write_fit_status_flags(st, "the suite's lognormal fit status (docs/fragility.md); rate_fit is NaN unless ok or zero_dispersion");
     // The suite's fragility beside the rate it gave, for the figure (scripts/plot_risk.py).
     put("median", fr.median, units, "the suite's lognormal fit: median");
     put("beta", fr.beta, "1", "the suite's lognormal fit: dispersion");
@@ -170,11 +168,7 @@ void write_contents(const h5::File& f, const RiskReport& r, const Provenance& pr
     write_hazard(f, r);
     const h5::Group risk = f.create_group("risk");
     for (std::size_t s = 0; s < r.risk.scenarios.size(); ++s) write_scenario(risk, r, r.fragility.scenarios[s], r.risk.scenarios[s]);
-    const h5::Group p = f.create_group("provenance");
-    h5::write_attribute(p, "version", prov.version);
-    h5::write_attribute(p, "config", prov.config_text);
-    h5::write_attribute(p, "created_utc", prov.created_utc);
-    h5::write_attribute(p, "wall_s", prov.wall_s);
+    io::write_provenance(f, prov);  // no ranks: risk runs on one process
 }
 
 }  // namespace

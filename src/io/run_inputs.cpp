@@ -28,21 +28,25 @@ std::vector<Input>& inputs() {
                          (in.path == path ? std::string() : " " + in.path) + ", which the run reads)");
 }
 
+/// The input noted for the file `st` describes (by identity: any of its names), or none.
+const Input* noted(const struct stat& st) {
+    for (const Input& in : inputs())
+        if (in.dev == st.st_dev && in.ino == st.st_ino) return &in;
+    return nullptr;
+}
+
 }  // namespace
 
 void note_input(const std::string& what, const std::string& path) {
     struct stat st {};
     if (path.empty() || ::stat(path.c_str(), &st) != 0) return;
-    for (const Input& in : inputs())
-        if (in.dev == st.st_dev && in.ino == st.st_ino) return;  // the first name it was given is kept
-    inputs().push_back({what, path, st.st_dev, st.st_ino});
+    if (!noted(st)) inputs().push_back({what, path, st.st_dev, st.st_ino});  // the first name it was given is kept
 }
 
 void refuse_input_as_output(const std::string& field, const std::string& path) {
     struct stat st {};
     if (path.empty() || ::stat(path.c_str(), &st) != 0) return;
-    for (const Input& in : inputs())
-        if (in.dev == st.st_dev && in.ino == st.st_ino) refuse(field, path, in);
+    if (const Input* in = noted(st)) refuse(field, path, *in);
 }
 
 void refuse_same_file(const std::string& field, const std::string& path, const std::string& what, const std::string& input) {

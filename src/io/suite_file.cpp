@@ -250,10 +250,7 @@ void write_fragility(const h5::Group& scenario, const SuiteSpec& spec, const Sui
     std::vector<std::uint8_t> status;
     for (const FragilityFit& fit : fr.fits) status.push_back(static_cast<std::uint8_t>(fit.status));
     const h5::Dataset ds = grid.write_on<std::uint8_t>("fit_status", status, {"damage_state", "alpha_rad", "radius_m"});
-    const std::uint8_t flags[] = {0, 1, 2, 3, 4, 5};
-    h5::write_attribute(ds, "long_name", "how the lognormal fit ended (docs/fragility.md)");
-    h5::write_attribute(ds, "flag_values", std::span<const std::uint8_t>(flags));
-    h5::write_attribute(ds, "flag_meanings", "ok none_reached all_reached zero_dispersion not_identifiable decreasing");
+    io::write_fit_status_flags(ds, "how the lognormal fit ended (docs/fragility.md)");
 }
 
 void write_contents(const h5::File& f, const SuiteSpec& spec, const SweepResults& r, const std::vector<DamageState>& states,

@@ -44,6 +44,11 @@ template <int W, AnchorageLaw Law>
 struct Batch {
     std::array<RhsLane<Law>, W> c{};  ///< written by Lane::prepare
     std::array<double, W> t0{}, y0{}, v0{}, dt{}, y1{}, v1{}, a0{};
+    /// A record's steps only (nodal families): the local error of (y1, v1) as estimated by the
+    /// embedded third-order pair of RK4 with the end's slope, h/6 (k4 - f(t + h, y1)) (its
+    /// weights 1/6, 1/3, 1/3, 0, 1/6 meet the four third-order conditions). The theta part is
+    /// free (k4's theta is v + h k3v, f's is v1); the theta_dot part costs a fifth evaluation.
+    std::array<double, W> err_y{}, err_v{};
 
     /// The coefficients as structure of arrays, and the in-pulse factors of the stage times.
     struct Soa {
@@ -137,6 +142,15 @@ struct Batch {
         }
     }
 
+    /// The error estimate is made where steps follow it: under records (and in mixed batches).
+    template <class F>
+    static constexpr bool estimates_of() {
+        if constexpr (std::is_same_v<F, PerLane>) return true;
+        else return F::nodal;
+    }
+    template <class F>
+    static constexpr bool estimates = estimates_of<F>();
+
     template <class F, bool pulse, bool with_y, bool acts>
     [[gnu::always_inline]] static inline void lanes_body(Batch& b) {
         for (int i = 0; i < W; ++i) {
@@ -164,6 +178,12 @@ struct Batch {
             b.y1[i] = y + h / 6.0 * (k1y + 2.0 * k2y + 2.0 * k3y + k4y);
             b.v1[i] = v + h / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
             b.a0[i] = k1v;
+            if constexpr (estimates<F>) {
+                const double y1 = b.y1[i], v1 = b.v1[i];
+                const double k5v = rocking::theta_ddot<Law, acts>(l, lk, g1, y1, v1);
+                b.err_y[i] = h / 6.0 * (k4y - v1);
+                b.err_v[i] = h / 6.0 * (k4v - k5v);
+            }
         }
     }
     template <class F, bool pulse, bool with_y, bool acts>

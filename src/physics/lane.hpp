@@ -36,6 +36,10 @@ public:
         never_uplifts_ = m.never_uplifts();  // a record's peak is a scan of the whole table
         h_ = set_.method == Method::paper ? set_.paper_dt_s
                                           : 2.0 * M_PI / (std::max(m.omega_max(), Law::omega(m)) * set_.steps_per_period);
+        adaptive_ = set_.method == Method::events && nodal_ && set_.tolerance > 0.0;
+        h_max_ = 4.0 * h_;
+        err_scale_y_ = 1.0 / (set_.tolerance * m.alpha);
+        err_scale_v_ = 1.0 / (set_.tolerance * std::sqrt(m.p2) * m.alpha);
         r_.t_overturn_s = NAN;
         if (m.theta0 != 0.0 || m.theta_dot0 != 0.0) start_moving();
     }
@@ -93,6 +97,7 @@ public:
     void finish_step(const Batch<W, Law>& b, int i) {
         ++r_.steps;
         if (set_.method == Method::paper) return paper_step(b.dt[i], b.y1[i], b.v1[i], b.a0[i]);
+        if (adaptive_ && !stepper_.searching() && !control(b.dt[i], b.err_y[i], b.err_v[i])) return;
         const double a0 = b.a0[i];
         stepper_.finish(RockingEvents<Law>{law_, side_, th_, thd_, in_pulse(), m_, t_}, t_, th_, thd_, b.dt[i], b.y1[i], b.v1[i],
                         [&](double dt, double y1, double v1, Event e, bool interior) { accept(dt, y1, v1, a0, e, interior); });
@@ -105,7 +110,9 @@ private:
     int side_ = 0;  ///< +1: rocking with theta > 0; -1: theta < 0; 0: at rest
     mutable double zero_asked_ = INFINITY, zero_ = -INFINITY;  ///< next_ax_zero's cache: asked at, answer
     bool done_ = false;
-    double t_pulse_end_, h_;
+    double t_pulse_end_, h_;  ///< h_: the next step's length (fixed, or chosen from the error)
+    bool adaptive_ = false;  ///< h_ follows the error estimate (IntegratorSettings::tolerance)
+    double h_max_ = INFINITY, err_scale_y_ = 0.0, err_scale_v_ = 0.0;
     GroundLane ground_;  ///< the pulse's coefficients in the lane loop
     bool nodal_ = false;  ///< the pulse's family takes its ground at the nodes from the lane
     double uplift_slope_;  ///< CellModel::uplift_slope, asked at every sample scanned at rest
@@ -122,6 +129,26 @@ private:
     std::optional<HistoryRecorder> history_;
 
     bool in_pulse() const { return t_ < t_pulse_end_; }
+
+    /// Error control of a trial step of length dt (not a search's re-run, which is shorter and
+    /// from the same start): its estimated local error, scaled by the tolerance, e = max(|e_theta|
+    /// / alpha, |e_theta_dot| / (p alpha)) / tol. e > 1: rejected (false), the step is tried
+    /// again from the same start, shorter. Else the next step is dt * 0.9 e^(-1/4), within
+    /// [0.2, 4] dt and at most h_max_; a step cut short by a boundary (a sample) does not
+    /// shorten the next one. The estimate is O(h^4) (the third-order member's error), so the
+    /// error per step stays ~tol and the global error falls like tol. sqrt(sqrt()) is exact
+    /// rounding on every machine: lanes and ranks take the same steps to the bit.
+    bool control(double dt, double err_y, double err_v) {
+        const double e = std::max(std::abs(err_y) * err_scale_y_, std::abs(err_v) * err_scale_v_);
+        double f = e > 0.0 ? 0.9 / std::sqrt(std::sqrt(e)) : 4.0;
+        f = std::clamp(f, 0.2, 4.0);
+        if (e > 1.0 && dt > 1e-9 * h_max_) {
+            h_ = dt * f;
+            return false;
+        }
+        h_ = std::min(h_max_, clipped_ ? std::max(h_, dt * f) : dt * f);
+        return true;
+    }
 
     double next_boundary() const {
         double b = set_.t_end_s;
@@ -268,7 +295,7 @@ private:
         const double t0 = t_, y0 = th_, v0 = thd_;
         const double t1 = (e == Event::none && clipped_ && !interior) ? boundary_ : t_ + dt;
         // A turning point inside the step (one that reaches the fracture angle was located).
-        if (side_ * v0 > 0.0 && side_ * v1 < 0.0) note_extremes(side_ * hermite_peak(dt, y0, v0, y1, v1));
+        if (side_ * v0 >= 0.0 && side_ * v1 < 0.0) note_extremes(peak_inside(dt, y0, v0, a0, t1, y1, v1));
         note_extremes(std::min(side_ * y1, M_PI / 2));
         if (history_) history_->step(t0, y0, v0, a0, t1, y1, v1, side_, law_, r_.impacts);
         note_reactions_inside(t0, y0, v0, t1, y1, v1);
@@ -281,6 +308,7 @@ private:
             case Event::fracture: return law_.fracture(side_);
             case Event::impact: return impact();
             case Event::turn: return law_.at_turn(side_, th_);
+            case Event::trough:  // only located to decide an impact, never accepted as an event
             case Event::none: break;
         }
         if (t_ >= set_.t_end_s) return finish(Outcome::safe);
@@ -288,6 +316,18 @@ private:
     }
 
     void note_extremes(double phi) { extremes_.add(phi, law_, side_); }
+
+    /// The in-step peak of side * theta of a step that turns (from s theta_dot >= 0 at its
+    /// start, which includes an uplift from rest, to < 0 at its end), on theta's quartic from
+    /// theta'' at both ends. An intact spring's peak stays at its fracture angle: the located
+    /// turning point (the grazing check) decided that the spring held.
+    double peak_inside(double dt, double y0, double v0, double a0, double t1, double y1, double v1) const {
+        const Ground g = in_pulse() ? Ground{m_.pulse.ax(t1), m_.pulse.ay(t1)} : Ground{};
+        const double a1 = rocking::theta_ddot<Law>(rocking::coef(m_.p2, m_.alpha, side_, m_.equations == Equations::linearised),
+                                                   law_.coef(side_), g, y1, v1);
+        const double peak = quartic_peak(dt, side_, y0, v0, a0, v1, a1);
+        return law_.intact(side_) ? std::min(peak, law_.break_angle()) : peak;
+    }
 
     void overturn() {
         r_.t_overturn_s = t_;

@@ -32,6 +32,7 @@ struct RockingEvents {
                 if (theta0 != 0.0) return s * y;
                 return s * theta_dot0 > 0.0 ? s * y / d : s * y / (d * d);
             case Event::turn: return s * v;
+            case Event::trough: return -s * v;
             case Event::none: break;
         }
         return 1.0;
@@ -45,6 +46,7 @@ struct RockingEvents {
             case Event::fracture: return s * law.break_angle();
             case Event::impact: return 0.0;
             case Event::turn:
+            case Event::trough:
             case Event::none: break;
         }
         return NAN;
@@ -96,6 +98,18 @@ struct RockingEvents {
         const double ends = std::max(s * y0, s * y1);
         const double brk = law.break_angle();
         return peak >= brk - (1e-4 * brk + 0.1 * (peak - ends));
+    }
+
+    /// theta can pass 0 and come back within one step, unseen at its ends (both on the step's
+    /// side): true if s theta turns from falling to rising inside the step (not from theta = 0,
+    /// where the trivial root is the start) and the cubic Hermite trough comes within a tenth of
+    /// its dip below the ends of 0, the same margin as grazes(); the located trough decides.
+    bool dips(double dt, double y1, double v1) const {
+        const double s = side, v0 = theta_dot0, y0 = theta0;
+        if (y0 == 0.0 || !(s * v0 < 0.0 && s * v1 > 0.0)) return false;
+        const double trough = s * hermite_peak(dt, y0, v0, y1, v1);
+        const double ends = std::min(s * y0, s * y1);
+        return trough <= 0.1 * (ends - trough);
     }
 };
 

@@ -7,7 +7,6 @@
 #include "rocksweep/core/errors.hpp"
 #include "rocksweep/app/option_checks.hpp"
 #include "rocksweep/app/options.hpp"
-#include "rocksweep/app/stored_options.hpp"
 
 using namespace rocksweep;
 
@@ -155,15 +154,6 @@ TEST(TomlConfig, ReadsBackWhatEffectiveConfigWrites) {
     EXPECT_EQ(items[5].parents, std::vector<std::string>{"sweep"});
     EXPECT_EQ(items[5].name, "chunk");
     EXPECT_EQ(items[5].inputs, std::vector<std::string>{"64"});
-}
-
-// What a design's --resume compares: the stored effective config, key by key.
-TEST(StoredOptions, ReadsTheKeysOfAnEffectiveConfig) {
-    const auto v = config_values("# comment\nmass = 3361.0\nanchorages = [\"free\", \"constant\"]\n[design]\ndesign.refine = 4\n");
-    ASSERT_EQ(v.size(), 3u);
-    EXPECT_EQ(v.at("mass"), "3361.0");
-    EXPECT_EQ(v.at("anchorages"), "[\"free\", \"constant\"]");
-    EXPECT_EQ(v.at("design.refine"), "4");
 }
 
 TEST(DefinesRun, KeepsWhatTheRunUsedOnly) {

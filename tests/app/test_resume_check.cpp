@@ -65,3 +65,31 @@ TEST(ResumeCheck, FloorsAndSaAreLeftToTheSuiteFilesCanonicalAttributes) {
     const std::string was = kStored + "suite.floor = [\"f2: 0.5 0.05 1.3\"]\nsuite.sa-period = 0.5\nsuite.sa-damping = 0.05\n";
     EXPECT_EQ(refusal(kStored + "suite.floor = [\"f2: 0.50 0.05 1.30\"]\nsuite.sa-period = 0.5\n", was), "");
 }
+
+// A design frees only what cuts up the work: no attribute of its files checks the refinement, so
+// its options do (design_resume.sh resumes a design with another --refine).
+TEST(ResumeCheck, ADesignMayChangeOnlyHowTheWorkIsCutUp) {
+    const std::string stored = "mass = 3361.0\ndesign.refine = 4\ndesign.chunk = 64\n";
+    const auto design = [&](const std::string& now) {
+        try {
+            check_resumed_config("r.h5", stored, now, work_options());
+        } catch (const InputError& e) {
+            return cli_message(e);
+        }
+        return std::string();
+    };
+    EXPECT_EQ(design("mass = 3361\ndesign.refine = 4.0\ndesign.chunk = 7\nlanes = 4\ncheckpoint-interval = 3\n"), "");
+    EXPECT_EQ(design("mass = 3361.0\ndesign.refine = 2\n"),
+              "--refine = 2 is invalid: 4, as r.h5 was computed with (--resume continues a file only with the settings that "
+              "shaped its results)");
+    EXPECT_EQ(refusal("mass = 3361.0\ndesign.refine = 2\n", stored), "");  // a sweep's file checks it by its attributes
+}
+
+// What every --resume compares: the stored effective config, key by key.
+TEST(ResumeCheck, ReadsTheKeysOfAnEffectiveConfig) {
+    const auto v = config_values("# comment\nmass = 3361.0\nanchorages = [\"free\", \"constant\"]\n[design]\ndesign.refine = 4\n");
+    ASSERT_EQ(v.size(), 3u);
+    EXPECT_EQ(v.at("mass"), "3361.0");
+    EXPECT_EQ(v.at("anchorages"), "[\"free\", \"constant\"]");
+    EXPECT_EQ(v.at("design.refine"), "4");
+}

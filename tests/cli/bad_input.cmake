@@ -20,6 +20,7 @@ function(bad_input_empty name regex)
            COMMAND bash -c "a=(\"$@\"); for i in \"\${!a[@]}\"; do [ \"\${a[$i]}\" = EMPTY ] && a[$i]=; done; exec \"$0\" \"\${a[@]}\""
                    ${EXPECT} 2 "${regex}" ${OUT} -- ${RS} ${ARGN})
 endfunction()
+bad_input(tolerance_too_large "--tolerance = 0.1 is invalid: out of range; allowed: a number in \\[0, 0.01\\]" sweep --config ${CFG} -o ${OUT} --tolerance 0.1)
 bad_input_empty(lanes_empty "--lanes = \"\" is invalid: not a number; allowed: one of 1, 4, 8, 16"
                 sweep --config ${CFG} -o ${OUT} --lanes EMPTY)
 bad_input(lanes_missing "--lanes is invalid: a value is missing; allowed: one value, ONE OF 1, 4, 8, 16"

@@ -2,13 +2,14 @@
 # design_risk.sh RS REPO DIR: a small risk-based design (design --suite --hazard) and the same
 # suite through rocksweep risk: the design's free-standing rate of overturning is the risk
 # command's empirical rate of the round's free block, and the criterion is exp(-rate t).
+# --keep-rounds: a finished design removes its round files otherwise.
 set -eu
 rs="$1"; repo="$2"; dir="$3"
 mkdir -p "$dir"
 cd "$repo"
 "$rs" design --config configs/design.toml --suite configs/records_suite.csv --intensity-points 8 \
-  --coarse-points 3 --rounds 1 --hazard configs/hazard_illustrative_pga.csv --exposure-years 50 \
-  --keep-rounds --overwrite --quiet -o "$dir/design.h5"
+  --coarse-points 3 --rounds 1 --hazard configs/hazard_illustrative_pga.csv --exposure-years 50 --keep-rounds \
+  --overwrite --quiet -o "$dir/design.h5"
 "$rs" risk --suite-file "$dir/design.round0.h5" --hazard configs/hazard_illustrative_pga.csv --overwrite --quiet \
   -o "$dir/risk.h5"
 /usr/bin/python3 - "$dir/design.h5" "$dir/risk.h5" scripts <<'PY'

@@ -28,6 +28,7 @@ check "^rocksweep: error: --steps-per-period = 96 is invalid: 48, $tail" --steps
 check "^rocksweep: error: --max-steps = 5000 is invalid: 2000000, $tail" --max-steps 5000
 check "^rocksweep: error: --no-energy-stop = given is invalid: not given, $tail" --no-energy-stop
 check "^rocksweep: error: --record-steps = cross is invalid: samples, $tail" --record-steps cross
+check "^rocksweep: error: --tolerance = 1e-0?7 is invalid: 1e-0?8, $tail" --tolerance 1e-7
 check "^rocksweep: error: --impact-threshold = 0.002 is invalid: 0.001, $tail" --impact-threshold 0.002
 check "^rocksweep: error: --equations = linearised is invalid: nonlinear, $tail" --equations linearised
 check "^rocksweep: error: --pulse = ricker is invalid: one-sine, $tail" --pulse ricker

@@ -56,3 +56,13 @@ add_test(NAME cli.suite_synthetic_floor_ranks_identical
                  --synthetic-count 6 ${FIT} --floor ground "f2: 0.5 0.05 1.3; 0.17 0.05 -0.4" --intensity-measure pfa)
 set_tests_properties(cli.suite_synthetic_ranks_identical cli.suite_synthetic_kill_resume.mpirun=2
                      cli.suite_synthetic_floor_ranks_identical PROPERTIES TIMEOUT 300 PROCESSORS 2)
+
+# Made on the ranks or written by synth and read back as a record suite: the same motions, so the
+# same results, bit for bit (the files' 17 digits read back to the generator's bits).
+add_test(NAME cli.suite_synthetic_equals_written_motions
+         COMMAND bash -c "set -e; d=$0; rs=$1; cfg=$2; shift 2; rm -rf $d; mkdir -p $d
+                          $rs synth $@ --count 5 -q -o $d/motions
+                          $rs suite --config $cfg --suite $d/motions/suite.csv --intensity-points 5 -q -o $d/files.h5
+                          $rs suite --config $cfg --synthetic-count 5 $@ --intensity-points 5 -q -o $d/made.h5
+                          h5diff $d/files.h5 $d/made.h5 /suite /suite"
+                 ${CMAKE_CURRENT_BINARY_DIR}/synth_made_vs_files ${RS} ${CFG} ${MODEL})

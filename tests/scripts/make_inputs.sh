@@ -2,7 +2,7 @@
 # Inputs shared by the plotting tests (the `plot_inputs` fixture), small enough to take a
 # second or two: a 20 x 20 sweep of all seven S. Matteo scenarios and of the free one alone,
 # one over two parameter axes (phase, size), one on T_p x a_p0 axes over two sizes,
-# the paper's sample case as HDF5 and CSV histories, Housner's constant-pulse pair, and a
+# the paper's sample case as HDF5 and CSV histories (and under the passive adaptive law), Housner's constant-pulse pair, and a
 # 41 x 41 basin map of the seven scenarios.
 # usage: make_inputs.sh ROCKSWEEP CONFIG DIR
 set -euo pipefail
@@ -21,6 +21,9 @@ for a in free constant adaptive; do
       --t-end 8 -q -o "$dir/$a.$ext"
   done
 done
+# The adaptive case under the passive law: a run that differs from adaptive.h5 by --adaptive-law alone.
+"$rs" simulate --config "$cfg" --anchorage adaptive --kmin-ratio 0.5 --adaptive-law passive --omega-ratio 4 \
+  --amplitude-ratio 2.7 --t-end 8 -q -o "$dir/passive.h5"
 for d in 0.6380 0.6300; do
   "$rs" simulate --config "$cfg" --pulse constant --amplitude-ratio 1.3 --duration "$d" \
     --equations linearised --t-end 6 -q -o "$dir/housner_$d.h5"

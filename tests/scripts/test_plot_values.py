@@ -21,6 +21,7 @@ import plot_history  # noqa: E402
 import plot_housner  # noqa: E402
 import plot_restoring  # noqa: E402
 import plot_spectra  # noqa: E402
+import rshistory  # noqa: E402
 import rsplot  # noqa: E402
 from rsplot import plt  # noqa: E402
 
@@ -81,21 +82,21 @@ def proportional(y, d):
 
 class Histories(unittest.TestCase):
     def test_csv_and_hdf5_histories_read_alike(self):
-        h5 = rsplot.History(os.path.join(INPUTS, "adaptive.h5"))
-        csv = rsplot.History(os.path.join(INPUTS, "adaptive.csv"))
+        h5 = rshistory.History(os.path.join(INPUTS, "adaptive.h5"))
+        csv = rshistory.History(os.path.join(INPUTS, "adaptive.csv"))
         for name in ("t", "theta", "theta_dot", "k_left", "k_right", "ground_acc", "w_excitation", "w_anchorage"):
             np.testing.assert_array_equal(h5.data[name], csv.data[name], err_msg=name)
         self.assertAlmostEqual(h5.k_max(), csv.k_max())
 
     def test_no_stiffness_panels_for_free_blocks_alone(self):
-        free = rsplot.History(os.path.join(INPUTS, "free.h5"))
-        anchored = rsplot.History(os.path.join(INPUTS, "constant.csv"))
+        free = rshistory.History(os.path.join(INPUTS, "free.h5"))
+        anchored = rshistory.History(os.path.join(INPUTS, "constant.csv"))
         self.assertNotIn("k_left", plot_history.panels_for([free]))
         self.assertIn("ground", plot_history.panels_for([free]))
         self.assertIn("k_left", plot_history.panels_for([free, anchored]))
 
     def test_a_run_keeps_its_colour_in_every_panel(self):
-        runs = [rsplot.History(os.path.join(INPUTS, n)) for n in ("free.h5", "constant.h5", "adaptive.csv")]
+        runs = [rshistory.History(os.path.join(INPUTS, n)) for n in ("free.h5", "constant.h5", "adaptive.csv")]
         made = []
         original = rsplot.save
         rsplot.save = lambda fig, out: made.append(fig)

@@ -51,6 +51,7 @@ struct GridOptions {
 struct NumericsOptions {
     std::string method = "events";
     double steps_per_period = 48.0, paper_dt_s = 0.0025, impact_threshold = 1e-3;
+    double tolerance = 1e-8;  ///< under records: each step's local error (IntegratorSettings::tolerance); 0: fixed
     std::int64_t max_steps = 2'000'000;
     bool no_energy_stop = false;
     std::string record_steps = "samples";  ///< samples: each record sample ends a step; cross

@@ -18,8 +18,9 @@ namespace rocksweep {
 struct HistoryDefaults {
     double steps_per_period;  ///< IntegratorSettings::steps_per_period
     double impact_threshold;  ///< settling threshold / (p alpha), make_cell_model's argument
+    double tolerance;  ///< IntegratorSettings::tolerance (records)
 };
-inline constexpr HistoryDefaults kHistoryDefaults{384.0, 1e-4};
+inline constexpr HistoryDefaults kHistoryDefaults{384.0, 1e-4, 1e-9};
 
 struct History {
     std::vector<double> t;             ///< [s]

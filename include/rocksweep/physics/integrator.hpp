@@ -22,6 +22,12 @@ struct IntegratorSettings {
     Method method = Method::events;
     /// Accuracy knob: steps per period of the cell's fastest time scale (events method).
     double steps_per_period = 48.0;
+    /// Under a record (events method): > 0, each step's local error, estimated by RK4's
+    /// embedded third-order pair, is kept within this (absolute on theta / alpha and
+    /// theta_dot / p) and the step chosen from it; steps_per_period then gives only the first
+    /// step and the longest (x4). 0: the fixed step of steps_per_period (pulses always).
+    /// docs/physics_kernel.md, "Error-controlled steps under records".
+    double tolerance = 0.0;
     double paper_dt_s = 0.0025;       ///< fixed step of the paper's method
     std::int64_t max_steps = 2'000'000;  ///< a cell that needs more is reported not converged
     bool energy_stop = true;  ///< after the pulse, decide a safe block by energy
