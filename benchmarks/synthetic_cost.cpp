@@ -36,8 +36,10 @@ SuiteSpec smatteo(std::shared_ptr<const MotionSource> motions, bool all_anchorag
         scenarios.push_back({"adaptive_rho0.1", adaptive_anchorage(b, fu, b.alpha_rad, 0.1), 1.0, 0.1});
     }
     const std::vector<double> r_m = radii == 1 ? std::vector<double>{b.radius_m} : Axis{0.392695228684288, 3.892695228684288, radii}.values();
+    SuiteMotions made;
+    made.made = std::move(motions);
     return make_suite_spec("", b, scenarios, IntensityMeasure::pga_g, Axis{levels == 1 ? 0.3 : 0.05, levels == 1 ? 0.3 : 1.5, levels},
-                           r_m, {}, std::move(motions));
+                           r_m, {}, std::move(made));
 }
 
 double run_cells(const SuiteSpec& spec) {

@@ -7,6 +7,8 @@
 # and the same block's size at five slendernesses (configs/suite_slenderness.toml):
 #   results/suite_slenderness.h5, results/suite_slenderness_overturning.png|pdf (against alpha,
 #   also docs/figures/suite_slenderness.png)
+# and the same block on the floors of a building and on a plinth (configs/suite_floors.toml):
+#   results/suite_floors.h5, results/suite_floors.png|pdf (plot_floors.py; also docs/figures/suite_floors.png)
 # Extra arguments go to rocksweep suite.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -22,4 +24,7 @@ done
 mpirun "${mpi_run[@]}" "$rs" suite --config configs/suite_slenderness.toml -o "$res/suite_slenderness.h5" --overwrite "$@"
 $py scripts/plot_suite.py "$res/suite_slenderness.h5" -o "$res/suite_slenderness"
 cp "$res/suite_slenderness_overturning.png" docs/figures/suite_slenderness.png
+mpirun "${mpi_run[@]}" "$rs" suite --config configs/suite_floors.toml -o "$res/suite_floors.h5" --overwrite "$@"
+$py scripts/plot_floors.py "$res/suite_floors.h5" -o "$res/suite_floors"
+cp "$res/suite_floors.png" docs/figures/suite_floors.png
 echo "suite: $res/suite.h5, $res/suite_{overturning,ida,fragility}.png; $res/suite_slenderness.h5, $res/suite_slenderness_overturning.png"

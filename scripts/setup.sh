@@ -9,7 +9,7 @@
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 packages=(build-essential cmake libopenmpi-dev openmpi-bin libhdf5-dev hdf5-tools
-          libcli11-dev libgtest-dev python3-h5py python3-numpy python3-matplotlib
+          libcli11-dev libeigen3-dev libgtest-dev python3-h5py python3-numpy python3-matplotlib
           ${extra_packages[@]+"${extra_packages[@]}"})
 missing=()
 for p in "${packages[@]}"; do

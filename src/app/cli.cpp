@@ -326,6 +326,9 @@ int run_cli(int argc, char** argv, const MpiSession& mpi) {
         ->check(existing_file("a ground-motion record"));
     sim->add_option("--record-vertical-column", so.record_vertical_column,
                     "Column of the vertical component, counting the time column")->check(integer_in(1, 1000));
+    sim->add_option("--floor", so.floor,
+                    "The floor the block stands on: 'NAME: T zeta gphi; T zeta gphi > T zeta gphi' (a building's modes: "
+                    "period [s], damping ratio, participation; '>' chains a plinth on it), filtering --record (docs/physics.md)");
     sim->add_option("--record-scale", so.record_scale, "Factor applied to the record")->check(number_in(-100, 100, none))->capture_default_str();
     sim->add_flag("-q,--quiet", sim_quiet, "Print nothing on success");
     sim->add_flag("--overwrite", sim_overwrite, "Replace an existing output file");

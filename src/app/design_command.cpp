@@ -78,7 +78,9 @@ void check_design_options(const CLI::App& app, const std::vector<std::string>& a
     refuse_typed(app, args, {"--anchorages", "--theta-f-ratios", "--kmin-ratios", "--scenario"},
                  "an option of sweep and info only; design chooses its scenarios (--stiffness-range, --kmin-ratio-range)");
     if (cmd.hazard.suite.empty()) {
-        refuse_typed(app, args, {"--intensity-measure", "--intensity-range", "--intensity-points", "--hazard", "--hazard-site"},
+        refuse_typed(app, args,
+                     {"--intensity-measure", "--intensity-range", "--intensity-points", "--floor", "--sa-period", "--sa-damping",
+                      "--hazard", "--hazard-site"},
                      "an option of design --suite (the hazard is the pulse region without it)");
         return;
     }
@@ -87,6 +89,9 @@ void check_design_options(const CLI::App& app, const std::vector<std::string>& a
                  "an option of the pulse region; with --suite the hazard is the suite's records");
     if (cmd.run.refine_stride != 0)
         throw InputError("refine", std::to_string(cmd.run.refine_stride), "0 with --suite (refinement is for pulse regions)");
+    if (cmd.hazard.floors.size() > 1)
+        throw InputError("floor", std::to_string(cmd.hazard.floors.size()) + " floors",
+                         "one --floor with design --suite (it designs the anchorage where the object stands)");
 }
 
 namespace {

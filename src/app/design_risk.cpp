@@ -13,6 +13,7 @@ DesignRisk read_design_hazard(const std::string& path, int site, double exposure
     HazardFile file = read_hazard_file("hazard", path, site);
     SuiteFragilityTable measure;
     measure.measure = to_string(spec.measure);
+    if (spec.measure == IntensityMeasure::sa_g) measure.period_s = spec.sa.period_s;
     check_same_measure(file.curve, path, measure);
     return DesignRisk{std::move(file.curve), path, exposure_years};
 }

@@ -151,7 +151,9 @@ void refuse_typed(const CLI::App& app, const std::vector<std::string>& args, con
         if (!typed) continue;
         // The option is the app's (model options) or a subcommand's own.
         const CLI::Option* opt = app.get_option_no_throw(name);
-        for (const CLI::App* sub : app.get_subcommands({})) opt = opt ? opt : sub->get_option_no_throw(name);
+        // Subcommands may share a name (simulate's and suite's --floor): the one typed holds the value.
+        for (const CLI::App* sub : app.get_subcommands({}))
+            if (const CLI::Option* o = sub->get_option_no_throw(name); o && (!opt || (opt->count() == 0 && o->count() > 0))) opt = o;
         std::string value;
         if (opt)
             for (const std::string& r : opt->results()) value += (value.empty() ? "" : " ") + r;

@@ -105,7 +105,7 @@ void check_simulate(const Given& given, const Options& o) {
     for (const char* opt : {"--pulse", "--omega-ratio", "--amplitude-ratio", "--duration", "--phase", "--vertical-amplitude", "--vertical-phase"})
         excludes(given, opt, "--record", "a recorded ground motion replaces the pulse");
     for (const char* opt : {"--record-units", "--record-scale", "--record-format", "--record-dt", "--record-column",
-                            "--record-vertical", "--record-vertical-column"})
+                            "--record-vertical", "--record-vertical-column", "--floor"})
         only_if(given, opt, given("--record"), "--record");
     const bool constant_pulse = s.pulse == "constant" && s.record.empty();
     for (const char* opt : {"--omega-ratio", "--phase", "--vertical-amplitude", "--vertical-phase"})

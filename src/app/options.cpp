@@ -11,6 +11,7 @@
 #include "rocksweep/app/axis_options.hpp"
 #include "rocksweep/app/memory_budget.hpp"
 #include "rocksweep/records/record.hpp"
+#include "rocksweep/records/suite_sweep.hpp"
 
 namespace rocksweep {
 
@@ -272,11 +273,12 @@ CellModel make_single_cell(const Options& o, Record* record) {
     Pulse pulse;
     pulse.ax_g = s.amplitude_ratio * b.alpha_rad;
     if (!s.record.empty()) {
-        const Record r = read_record(record_source(s));
-        if (!o.numerics.record_any_pga && !plausible_pga(r))
-            throw InputError("record", s.record, implausible_pga(r, "pass --record-any-pga to accept it"));
-        pulse = to_pulse(r, b.gravity);
-        if (record) *record = r;
+        // Checked and shown as read, on the ground: the floor's motion is what the building makes of it.
+        const Record ground = read_record(record_source(s));
+        if (!o.numerics.record_any_pga && !plausible_pga(ground))
+            throw InputError("record", s.record, implausible_pga(ground, "pass --record-any-pga to accept it"));
+        pulse = to_pulse(s.floor.empty() ? ground : on_floor(ground, motion::parse_floor("floor", s.floor)), b.gravity);
+        if (record) *record = ground;
     } else if (s.pulse == "sine") {
         pulse.kind = PulseKind::sine;
         pulse.omega = s.omega_ratio * b.p();

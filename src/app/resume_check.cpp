@@ -96,7 +96,7 @@ const std::set<std::string>& work_options() {
 const std::set<std::string>& resumable_freely() {
     static const std::set<std::string> free = [] {
         std::set<std::string> s = work_options();
-        s.insert({"part", "parts", "refine", "refine-axes", "axis", "scenario"});
+        s.insert({"part", "parts", "refine", "refine-axes", "axis", "scenario", "floor", "sa-period", "sa-damping"});
         return s;
     }();
     return free;

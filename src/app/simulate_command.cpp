@@ -9,6 +9,7 @@
 #include "rocksweep/physics/history.hpp"
 #include "rocksweep/io/history_file.hpp"
 #include "rocksweep/io/output_claim.hpp"
+#include "rocksweep/motion/floor_filter.hpp"
 #include "rocksweep/records/record.hpp"
 
 #ifndef ROCKSWEEP_VERSION
@@ -38,7 +39,7 @@ int run_simulate(const Options& o, const SimulateCommand& cmd, const std::string
     } else {
         std::vector<std::pair<std::string, std::string>> words{
             {"anchorage", o.single.anchorage}, {"pulse", o.single.record.empty() ? o.single.pulse : "record"},
-            {"record", o.single.record}, {"adaptive_law", to_string(m.adaptive_law)}, {"method", to_string(settings.method)},
+            {"record", o.single.record}, {"floor", o.single.floor.empty() ? "ground" : motion::to_string(motion::parse_floor("floor", o.single.floor))}, {"adaptive_law", to_string(m.adaptive_law)}, {"method", to_string(settings.method)},
             {"equations", to_string(m.equations)}, {"config", config_text}, {"version", ROCKSWEEP_VERSION}};
         std::vector<std::pair<std::string, double>> numbers{
             {"p_rad_s", m.p()}, {"alpha_rad", m.alpha}, {"e", m.e}, {"steps_per_period", settings.steps_per_period},

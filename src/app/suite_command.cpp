@@ -16,6 +16,7 @@
 #include "rocksweep/io/output_claim.hpp"
 #include "rocksweep/io/run_inputs.hpp"
 #include "rocksweep/io/suite_file.hpp"
+#include "rocksweep/motion/floor_filter.hpp"
 #include "rocksweep/parallel/progress.hpp"
 #include "rocksweep/parallel/scheduler.hpp"
 #include "rocksweep/synthetic/model_motions.hpp"
@@ -31,8 +32,16 @@ void add_suite_hazard_options(CLI::App& sub, SuiteCommand& cmd) {
         ->check(existing_file("a record suite (CSV)"));
     sub.add_option("--intensity-measure", cmd.measure,
                    "What the levels measure: pga (PGA [g]), pgv (PGV [m/s]), pga-ratio (PGA / (g tan alpha)), "
-                   "scale (the factor itself)")
-        ->check(one_of({"pga", "pgv", "pga-ratio", "scale"}))->capture_default_str();
+                   "scale (the factor itself), sa (Sa(T, zeta) of the ground [g]), pfa (peak floor acceleration [g])")
+        ->check(one_of({"pga", "pgv", "pga-ratio", "scale", "sa", "pfa"}))->capture_default_str();
+    sub.add_option("--floor", cmd.floors,
+                   "Where the blocks stand, one scenario set per floor: ground, or 'NAME: T zeta gphi; T zeta gphi > T zeta "
+                   "gphi' (a building's modes: period [s], damping ratio, participation; '>' chains a plinth on it; "
+                   "docs/suite.md)");
+    sub.add_option("--sa-period", cmd.sa_period_s, "Period T of the Sa(T, zeta) measure [s]")
+        ->check(number_in(motion::floor_period_min_s, motion::floor_period_max_s, "s"))->capture_default_str();
+    sub.add_option("--sa-damping", cmd.sa_damping, "Damping ratio zeta of the Sa(T, zeta) measure")
+        ->check(number_in(0, 0.99, ""))->capture_default_str();
     sub.add_option("--intensity-range", cmd.intensity_range, "Levels from LO to HI, in the measure's unit")
         ->expected(2)->check(number_in(0, 1e3, "", true))->capture_default_str();
     sub.add_option("--intensity-points", cmd.intensity_points, "Levels, evenly spaced, both ends included")
@@ -112,15 +121,17 @@ SuiteSpec make_suite_spec(const Options& opts, const SuiteCommand& cmd) {
                              "angles below " + format_short(squat, 4) + " rad, where Housner's e of this block's I0/(mR^2) = " +
                                  format_short(ratio, 4) + " reaches 0 (the block is too squat to rock)");
     }
-    std::shared_ptr<const MotionSource> motions;
+    SuiteMotions motions;
+    for (const std::string& text : cmd.floors) motions.floors.push_back(motion::parse_floor("floor", text));
+    motions.sa = motion::Oscillator{cmd.sa_period_s, cmd.sa_damping};
     if (cmd.synthetic.count > 0) {
         const ResolvedSource r = resolve(cmd.synthetic, nullptr);
-        motions = std::make_shared<synthetic::ModelMotions>(synthetic::Generator(r.params, r.dt_s, r.duration_s),
-                                                             cmd.synthetic.seed, cmd.synthetic.count);
+        motions.made = std::make_shared<synthetic::ModelMotions>(synthetic::Generator(r.params, r.dt_s, r.duration_s),
+                                                                  cmd.synthetic.seed, cmd.synthetic.count);
     }
     SuiteSpec spec = make_suite_spec(cmd.suite, base.block, base.scenarios,
                                      parse_intensity_measure("intensity-measure", cmd.measure), levels, radii, alphas,
-                                     motions);
+                                     std::move(motions));
     for (const SuiteMember& m : spec.records) {
         if (m.motion >= 0) continue;  // made, not read: no file, its PGA is the model's
         const std::string where = cmd.suite + " line " + std::to_string(m.entry.line);
@@ -196,12 +207,16 @@ std::size_t nearest(const std::vector<double>& axis, double x) {
 void summarise(const Plan& plan, const SweepResults& r, std::ostream& log) {
     const SuiteSpec& spec = plan.spec;
     const std::size_t a = nearest(spec.alphas_rad, spec.block.alpha_rad), j = nearest(spec.radii_m, spec.block.radius_m);
-    const char* units = spec.measure == IntensityMeasure::pga_g ? " g" : spec.measure == IntensityMeasure::pgv_m_s ? " m/s" : "";
+    const IntensityMeasure m = spec.measure;
+    const bool in_g = m == IntensityMeasure::pga_g || m == IntensityMeasure::sa_g || m == IntensityMeasure::pfa_g;
+    const char* units = in_g ? " g" : m == IntensityMeasure::pgv_m_s ? " m/s" : "";
     log << std::setprecision(3) << "overturning fragility against " << intensity_long_name(spec.measure) << " (alpha = "
         << spec.alphas_rad[a] << " rad, R = " << spec.radii_m[j] << " m):\n";
+    int width = 22;  // names on floors ("adaptive_rho0.1@f4_plinth") run longer
+    for (const Scenario& sc : spec.scenarios) width = std::max(width, static_cast<int>(sc.name.size()) + 2);
     for (std::size_t s = 0; s < spec.scenarios.size(); ++s) {
         const FragilityFit fit = suite_fragility(spec, r, s, {plan.states.back()}).fits.at(a * spec.radii_m.size() + j);
-        log << "  " << std::left << std::setw(22) << spec.scenarios[s].name << std::right;
+        log << "  " << std::left << std::setw(width) << spec.scenarios[s].name << std::right;
         if (fit.status == FitStatus::ok)
             log << "median " << fit.curve.median << units << " (95 % " << fit.median_lo << " to " << fit.median_hi << "), beta "
                 << fit.curve.beta << "\n";

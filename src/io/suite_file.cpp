@@ -1,6 +1,7 @@
 #include "rocksweep/io/suite_file.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <optional>
 #include <set>
 
@@ -8,12 +9,13 @@
 #include "rocksweep/core/errors.hpp"
 #include "rocksweep/io/grid_layout.hpp"
 #include "rocksweep/io/hdf5.hpp"
+#include "rocksweep/motion/response_spectrum.hpp"
 
 namespace rocksweep {
 
 namespace {
 
-constexpr std::int64_t format_version = 3;  // 2: the alpha_rad axis; 3: median -> median_intensity
+constexpr std::int64_t format_version = 4;  // 2: the alpha_rad axis; 3: median -> median_intensity; 4: floors and Sa
 constexpr const char* kind = "suite";
 
 GridAxis record_axis(const SuiteSpec& spec) {
@@ -37,14 +39,81 @@ std::string record_names(const SuiteSpec& spec) {
     return names;
 }
 
+void write_measure_on(const GridGroup& grid, const char* name, const std::vector<double>& v,
+                      std::initializer_list<std::string_view> axes, const char* units, const char* long_name) {
+    const h5::Dataset ds = grid.write_on<double>(name, v, axes);
+    h5::write_attribute(ds, "units", units);
+    h5::write_attribute(ds, "long_name", long_name);
+}
+
+// The shortest text that reads back as the same double: a resume compares it exactly.
+std::string shortest(double x) {
+    char buf[32];
+    return std::string(buf, std::to_chars(buf, buf + sizeof buf, x).ptr);
+}
+
+std::string floor_texts(const SuiteSpec& spec) {
+    std::string texts;
+    for (const motion::Floor& f : spec.floors) texts += (texts.empty() ? "" : "\n") + motion::to_string(f);
+    return texts;
+}
+
 /// What defines the cells beyond the block and the numerics: compared on resume.
 std::vector<io::NamedText> root_texts(const SuiteSpec& spec) {
-    return {{"intensity_measure", to_string(spec.measure)}, {"records", record_names(spec)}};
+    return {{"intensity_measure", to_string(spec.measure)},
+            {"records", record_names(spec)},
+            {"floors", floor_texts(spec)},
+            {"sa_oscillator", "T = " + shortest(spec.sa.period_s) + " s, zeta = " + shortest(spec.sa.damping)}};
+}
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+/// Each floor's motion, per record and as the suite's median: what the blocks there stood on.
+void write_floors(const h5::File& f, const SuiteSpec& spec) {
+    const h5::Group floors = f.create_group("floors");
+    h5::write_attribute(floors, "spectrum_damping", 0.05);
+    const std::vector<double> periods = motion::floor_spectrum_periods();
+    const std::size_t n = spec.records.size(), alphas = spec.alphas_rad.size(), levels = spec.intensity.points;
+    for (std::size_t k = 0; k < spec.floors.size(); ++k) {
+        const h5::Group g = floors.create_group(spec.floors[k].name);
+        h5::write_attribute(g, "floor", motion::to_string(spec.floors[k]));
+        const GridAxis axes[] = {record_axis(spec), alpha_axis(spec), intensity_axis(spec),
+                                 {"period_s", "s", "natural period of the 5 %-damped oscillator", periods}};
+        const GridGroup grid(g, axes);
+        std::vector<double> pfa, ratio, spectrum, median_spectrum, scale;
+        for (const SuiteMember& m : spec.records) {
+            pfa.push_back(m.floors[k].pfa_g);
+            ratio.push_back(m.floors[k].pfa_g / m.measures.pga_g);
+            spectrum.insert(spectrum.end(), m.floors[k].spectrum_g.begin(), m.floors[k].spectrum_g.end());
+        }
+        for (std::size_t t = 0; t < periods.size(); ++t) {
+            std::vector<double> at;
+            for (const SuiteMember& m : spec.records) at.push_back(m.floors[k].spectrum_g[t]);
+            median_spectrum.push_back(median(at));
+        }
+        for (std::size_t r = 0; r < n; ++r)
+            for (std::size_t a = 0; a < alphas; ++a)
+                for (std::size_t l = 0; l < levels; ++l) scale.push_back(spec.scale_factor(r, a, l, k));
+        write_measure_on(grid, "pfa_g", pfa, {"record"}, "1", "peak floor acceleration of the record as read / standard gravity");
+        write_measure_on(grid, "pfa_over_pga", ratio, {"record"}, "1", "peak floor acceleration / peak ground acceleration");
+        write_measure_on(grid, "spectrum_g", spectrum, {"record", "period_s"}, "1",
+                         "5 %-damped pseudo-acceleration spectrum of the floor motion / standard gravity");
+        write_measure_on(grid, "median_spectrum_g", median_spectrum, {"period_s"}, "1",
+                         "median over the records of spectrum_g / standard gravity");
+        h5::write_attribute(g, "median_pfa_g", median(pfa));
+        h5::write_attribute(g, "median_pfa_over_pga", median(ratio));
+        write_measure_on(grid, "scale_factor", scale, {"record", "alpha_rad", "intensity"}, "1",
+                         "factor each record is multiplied by at each level, for the blocks on this floor");
+    }
 }
 
 /// Datasets of /records: a record of one of these names would collide with them.
 std::set<std::string> records_datasets() {
-    std::set<std::string> names{"record", "alpha_rad", "intensity", "scale_factor", "pga_scaled_g"};
+    std::set<std::string> names{"record", "alpha_rad", "intensity", "scale_factor", "pga_scaled_g", "sa_g"};
     for (const IntensityField& f : intensity_fields) names.insert(f.name);
     return names;
 }
@@ -70,6 +139,13 @@ void write_records(const h5::File& f, const SuiteSpec& spec) {
         h5::write_attribute(ds, "units", field.units);
         h5::write_attribute(ds, "long_name", field.long_name);
     }
+    std::vector<double> sa;
+    for (const SuiteMember& m : spec.records) sa.push_back(m.sa_g);
+    const h5::Dataset sa_ds = grid.write_on<double>("sa_g", sa, {"record"});
+    h5::write_attribute(sa_ds, "units", "1");
+    h5::write_attribute(sa_ds, "long_name", "spectral pseudo-acceleration Sa(T, zeta) of the record as read / standard gravity");
+    h5::write_attribute(sa_ds, "period_s", spec.sa.period_s);
+    h5::write_attribute(sa_ds, "damping", spec.sa.damping);
     std::vector<double> scale, pga;
     for (std::size_t r = 0; r < n; ++r)
         for (std::size_t a = 0; a < alphas; ++a)
@@ -93,13 +169,6 @@ void write_records(const h5::File& f, const SuiteSpec& spec) {
         for (std::size_t c = 0; c < spec.metadata_columns.size(); ++c)
             h5::write_attribute(rg, spec.metadata_columns[c], m.entry.metadata.at(c));
     }
-}
-
-void write_measure_on(const GridGroup& grid, const char* name, const std::vector<double>& v,
-                      std::initializer_list<std::string_view> axes, const char* units, const char* long_name) {
-    const h5::Dataset ds = grid.write_on<double>(name, v, axes);
-    h5::write_attribute(ds, "units", units);
-    h5::write_attribute(ds, "long_name", long_name);
 }
 
 void write_overturning(const h5::Group& scenario, const SuiteSpec& spec, const OverturningSpectrum& o) {
@@ -195,12 +264,15 @@ void write_contents(const h5::File& f, const SuiteSpec& spec, const SweepResults
     for (const io::NamedText& t : root_texts(spec)) h5::write_attribute(f, t.name, t.value);
     h5::write_attribute(f, "intensity_units", intensity_units(spec.measure));
     h5::write_attribute(f, "intensity_long_name", intensity_long_name(spec.measure));
+    // A hazard curve of SA(T) must match T (rocksweep risk, docs/risk.md).
+    if (spec.measure == IntensityMeasure::sa_g) h5::write_attribute(f, "intensity_period_s", spec.sa.period_s);
     h5::write_attribute(f, "suite_file", spec.suite_path);
     // Synthetic motions are not stored: what makes them is (docs/synthetic.md).
     if (spec.motions) h5::write_attribute(f, "synthetic_motions", spec.motions->describe());
     h5::write_attribute(f, "rocksweep_version", prov.version);
     io::write_progress(f, r);
     write_records(f, spec);
+    write_floors(f, spec);
 
     const bool complete = r.done_count() == r.size();
     const GridAxis axes[] = {record_axis(spec), alpha_axis(spec), radius_axis(spec), intensity_axis(spec)};
@@ -208,6 +280,7 @@ void write_contents(const h5::File& f, const SuiteSpec& spec, const SweepResults
     for (std::size_t s = 0; s < spec.scenarios.size(); ++s) {
         const h5::Group g = suite.create_group(spec.scenarios[s].name);
         io::write_scenario_attributes(g, s, spec.scenarios[s]);
+        h5::write_attribute(g, "floor", spec.floors[spec.floor_of(s)].name);
         const GridGroup grid(g, axes);
         io::write_result_columns(grid, r, s * spec.cells_per_scenario());
         if (!complete) continue;
@@ -246,6 +319,8 @@ SweepResults read_contents(const std::string& path, const h5::File& f, const Sui
     for (std::size_t s = 0; s < spec.scenarios.size(); ++s) {
         const h5::Group g = suite.open_group(spec.scenarios[s].name);
         io::compare_texts(g, io::scenario_texts(spec.scenarios[s]), mismatch);
+        const io::NamedText floor[] = {{"floor", spec.floors[spec.floor_of(s)].name}};
+        io::compare_texts(g, floor, mismatch);
         io::compare_numbers(g, io::scenario_numbers(spec.scenarios[s]), mismatch);
         if (const std::string diff = axes_difference(g, axes); !diff.empty()) mismatch(g.name() + ": " + diff);
         io::read_result_columns(g, axes, r, s * spec.cells_per_scenario(), mismatch);

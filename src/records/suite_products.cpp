@@ -44,7 +44,7 @@ OverturningSpectrum overturning_spectrum(const SuiteSpec& spec, const SweepResul
             // The level is exact on the axis; the PGA the record had there follows from it.
             for (std::size_t l = 0; l < spec.intensity.points; ++l)
                 if (spec.intensity.at(l) == c.first_level)
-                    o.first_pga_g[k] = spec.scale_factor(rec, at.alpha, l) * spec.records[rec].measures.pga_g;
+                    o.first_pga_g[k] = spec.scale_factor(rec, at.alpha, l, spec.floor_of(s)) * spec.records[rec].measures.pga_g;
         }
     return o;
 }

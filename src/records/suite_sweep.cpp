@@ -7,6 +7,7 @@
 
 #include "rocksweep/core/errors.hpp"
 #include "rocksweep/grid/block_family.hpp"
+#include "rocksweep/motion/response_spectrum.hpp"
 #include "rocksweep/physics/integrator.hpp"
 
 namespace rocksweep {
@@ -26,6 +27,8 @@ constexpr MeasureInfo measures[] = {
     {IntensityMeasure::pgv_m_s, "pgv", "pgv_m_s", "m/s", "target peak ground velocity"},
     {IntensityMeasure::pga_ratio, "pga-ratio", "pga_ratio", "1", "target PGA / (g tan alpha)"},
     {IntensityMeasure::scale, "scale", "scale", "1", "scale factor applied to every record"},
+    {IntensityMeasure::sa_g, "sa", "sa_g", "1", "target spectral pseudo-acceleration Sa(T, zeta) of the ground / standard gravity"},
+    {IntensityMeasure::pfa_g, "pfa", "pfa_g", "1", "target peak floor acceleration / standard gravity"},
 };
 
 const MeasureInfo& info(IntensityMeasure m) {
@@ -39,7 +42,7 @@ const MeasureInfo& info(IntensityMeasure m) {
 IntensityMeasure parse_intensity_measure(const std::string& field, const std::string& text) {
     for (const MeasureInfo& i : measures)
         if (text == i.word) return i.measure;
-    throw InputError(field, text, "one of pga, pgv, pga-ratio, scale");
+    throw InputError(field, text, "one of pga, pgv, pga-ratio, scale, sa, pfa");
 }
 
 std::string to_string(IntensityMeasure m) { return info(m).name; }
@@ -48,10 +51,12 @@ const char* intensity_long_name(IntensityMeasure m) { return info(m).long_name; 
 
 Block SuiteSpec::block_of(double alpha_rad, double radius_m) const { return reshaped_block(block, alpha_rad, radius_m); }
 
-double SuiteSpec::scale_factor(std::size_t r, std::size_t alpha, std::size_t level) const {
+double SuiteSpec::scale_factor(std::size_t r, std::size_t alpha, std::size_t level, std::size_t floor) const {
     const double x = intensity.at(level);
     const IntensityMeasures& im = records.at(r).measures;
     switch (measure) {
+        case IntensityMeasure::sa_g: return x / records[r].sa_g;
+        case IntensityMeasure::pfa_g: return x / records[r].floors.at(floor).pfa_g;
         case IntensityMeasure::pga_g: return x / im.pga_g;
         case IntensityMeasure::pgv_m_s: return x / im.pgv_m_s;
         case IntensityMeasure::pga_ratio: return x / pga_over_g_tan_alpha(im.pga_g, alphas_rad.at(alpha), block.gravity);
@@ -86,19 +91,52 @@ CellModel SuiteSpec::cell(std::size_t index, const Pulse* ground) const {
     // Every cell of a record shares its samples (both components); the level scales them per lane.
     const SuiteMember& rec = records[at.record];
     if (rec.motion >= 0 && !ground) throw std::logic_error("SuiteSpec::cell: a made motion needs its ground");
+    const std::size_t floor = floor_of(at.scenario);
+    const FloorResponse& on = rec.floors.at(floor);
     Pulse pulse = ground ? *ground
-                  : rec.pulse.record && b.gravity == block.gravity ? rec.pulse
-                                                                   : to_pulse(rec.record, b.gravity);
-    pulse.record_scale = scale_factor(at.record, at.alpha, at.level);
+                  : on.pulse.record && b.gravity == block.gravity ? on.pulse
+                                                                  : to_pulse(on_floor(rec.record, floors[floor]), b.gravity);
+    pulse.record_scale = scale_factor(at.record, at.alpha, at.level, floor);
     return make_cell_model(b, anchorage_on(sc, block, b), pulse, equations, impact_threshold);
+}
+
+Record on_floor(const Record& ground, const motion::Floor& floor) {
+    Record on = ground;
+    if (floor.is_ground()) return on;
+    const int m = motion::floor_oversampling(floor, ground.dt_s);
+    on.dt_s = ground.dt_s / m;
+    on.ax_g = motion::floor_motion(floor, motion::oversample(ground.ax_g, m), on.dt_s);
+    if (!ground.ay_g.empty()) on.ay_g = motion::oversample(ground.ay_g, m);
+    return on;
 }
 
 namespace {
 
+// A motion's measures on the ground and on every floor of `spec`; the floors' samples are kept
+// (as pulses every cell shares) only when `keep`: a made motion's are made again in the cells.
+void measure_member(SuiteMember& m, const SuiteSpec& spec, bool keep) {
+    m.measures = intensity_measures(m.record);
+    if (keep) m.pulse = to_pulse(m.record, spec.block.gravity);
+    m.sa_g = motion::spectral_acceleration(m.record.ax_g, m.record.dt_s, spec.sa);
+    const std::vector<double> periods = motion::floor_spectrum_periods();
+    for (const motion::Floor& floor : spec.floors) {
+        const Record r = on_floor(m.record, floor);
+        FloorResponse on;
+        if (keep) on.pulse = floor.is_ground() ? m.pulse : to_pulse(r, spec.block.gravity);
+        for (double x : r.ax_g) on.pfa_g = std::max(on.pfa_g, std::abs(x));
+        on.spectrum_g = motion::response_spectrum(r.ax_g, r.dt_s, periods, 0.05);
+        m.floors.push_back(std::move(on));
+    }
+}
+
 // A level is reached by dividing by the motion's own measure: one without it (all zeros) cannot
 // be scaled to any level.
 void require_measure(IntensityMeasure measure, const SuiteMember& m, const std::string& where) {
-    const double own = measure == IntensityMeasure::pgv_m_s ? m.measures.pgv_m_s : m.measures.pga_g;
+    double own = measure == IntensityMeasure::pgv_m_s ? m.measures.pgv_m_s
+                 : measure == IntensityMeasure::sa_g  ? m.sa_g
+                                                      : m.measures.pga_g;
+    if (measure == IntensityMeasure::pfa_g)
+        for (const FloorResponse& on : m.floors) own = std::min(own, on.pfa_g);
     if (measure != IntensityMeasure::scale && !(own > 0.0))
         throw InputError("suite", where,
                          "records with a non-zero " + std::string(info(measure).name) + " to scale to a level (" +
@@ -109,34 +147,41 @@ void require_measure(IntensityMeasure measure, const SuiteMember& m, const std::
 
 SuiteSpec make_suite_spec(const std::string& suite_path, const Block& block, std::vector<Scenario> scenarios,
                           IntensityMeasure measure, Axis intensity, std::vector<double> radii_m,
-                          std::vector<double> alphas_rad, std::shared_ptr<const MotionSource> motions) {
+                          std::vector<double> alphas_rad, SuiteMotions motions) {
     SuiteSpec spec;
     spec.block = block;
     spec.suite_path = suite_path;
+    spec.sa = motions.sa;
+    spec.floors = motions.floors.empty() ? std::vector<motion::Floor>{motion::Floor{}} : motions.floors;
+    for (std::size_t i = 0; i < spec.floors.size(); ++i)
+        for (std::size_t j = 0; j < i; ++j)
+            if (spec.floors[i].name == spec.floors[j].name)
+                throw InputError("floor", spec.floors[i].name, "distinct names (a floor is listed twice)");
     if (!suite_path.empty()) {
         const RecordSuite suite = read_record_suite(suite_path);
         spec.metadata_columns = suite.metadata_columns;
         for (const SuiteRecord& entry : suite.records) {
-            SuiteMember m{entry, read_suite_record(suite, entry), {}, {}, -1};
-            m.measures = intensity_measures(m.record);
-            m.pulse = to_pulse(m.record, block.gravity);
+            SuiteMember m{entry, read_suite_record(suite, entry), {}, {}, -1, 0.0, {}};
+            measure_member(m, spec, true);
             require_measure(measure, m, suite_path + " line " + std::to_string(entry.line));
             spec.records.push_back(std::move(m));
         }
     }
-    // Made motions: measured now, their samples dropped; the cells make them again.
-    for (std::size_t i = 0; motions && i < motions->size(); ++i) {
+    // Made motions: measured now, on the ground and every floor, as a read record is; their
+    // samples dropped, the cells make them again (compute_suite_cells).
+    const std::shared_ptr<const MotionSource>& made = motions.made;
+    for (std::size_t i = 0; made && i < made->size(); ++i) {
         SuiteMember m;
-        m.entry.name = motions->name(i);
+        m.entry.name = made->name(i);
         m.entry.metadata.assign(spec.metadata_columns.size(), "");
-        m.record = motions->motion(i);
-        m.measures = intensity_measures(m.record);
+        m.record = made->motion(i);
+        measure_member(m, spec, false);
         m.record.ax_g = {};
         m.motion = static_cast<std::ptrdiff_t>(i);
         require_measure(measure, m, "synthetic motion " + std::to_string(i));
         spec.records.push_back(std::move(m));
     }
-    spec.motions = std::move(motions);
+    spec.motions = std::move(motions.made);
     if (spec.records.empty()) throw InputError("suite", suite_path, "a suite with at least one record");
     spec.measure = measure;
     spec.intensity = intensity;
@@ -144,25 +189,38 @@ SuiteSpec make_suite_spec(const std::string& suite_path, const Block& block, std
     if (alphas_rad.empty()) alphas_rad.push_back(block.alpha_rad);
     spec.radii_m = std::move(radii_m);
     spec.alphas_rad = std::move(alphas_rad);
-    spec.scenarios = std::move(scenarios);
+    // Every scenario on every floor; on the ground alone, the scenarios keep their names.
+    const bool ground_only = spec.floors.size() == 1 && spec.floors[0].is_ground();
+    for (std::size_t f = 0; f < spec.floors.size(); ++f)
+        for (Scenario sc : scenarios) {
+            if (!ground_only) sc.name += "@" + spec.floors[f].name;
+            spec.scenarios.push_back(std::move(sc));
+            spec.scenario_floor.push_back(f);
+        }
     return spec;
 }
 
 void compute_suite_cells(const SuiteSpec& spec, const IntegratorSettings& settings, std::size_t first,
                          std::size_t count, CellResult* out, int lanes) {
     std::vector<CellModel> cells(count);
-    std::size_t made = spec.records.size();  // the record whose motion `ground` holds
+    // The made motion `ground` holds, on its floor: cells of one scenario and record are
+    // consecutive, so each is made (and filtered) once per run of them. The same function of
+    // (motion, floor) as make_suite_spec measured, so a level reaches its target exactly.
+    std::size_t made = spec.records.size(), made_floor = 0;
     Pulse ground;
     for (std::size_t i = 0; i < count; ++i) {
-        const std::size_t r = spec.coordinates(first + i).record;
-        const SuiteMember& m = spec.records[r];
+        const SuiteSpec::Coordinates at = spec.coordinates(first + i);
+        const SuiteMember& m = spec.records[at.record];
         if (m.motion < 0) {
             cells[i] = spec.cell(first + i);
             continue;
         }
-        if (r != made) {
-            ground = to_pulse(spec.motions->motion(static_cast<std::size_t>(m.motion)), spec.block.gravity);
-            made = r;
+        const std::size_t floor = spec.floor_of(at.scenario);
+        if (at.record != made || floor != made_floor) {
+            const Record motion = spec.motions->motion(static_cast<std::size_t>(m.motion));
+            ground = to_pulse(on_floor(motion, spec.floors.at(floor)), spec.block.gravity);
+            made = at.record;
+            made_floor = floor;
         }
         cells[i] = spec.cell(first + i, &ground);
     }

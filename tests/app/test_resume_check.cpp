@@ -59,6 +59,13 @@ TEST(ResumeCheck, AnOptionInOneConfigOnlyIsNotGivenInTheOther) {
 
 TEST(ResumeCheck, AFileWithoutAConfigIsNotChecked) { EXPECT_EQ(refusal("mass = 1\n", ""), ""); }
 
+TEST(ResumeCheck, FloorsAndSaAreLeftToTheSuiteFilesCanonicalAttributes) {
+    // The suite file compares its floors parsed and its Sa oscillator exactly (floor_suite.sh):
+    // a floor spelt otherwise is the same floor, and another is refused there, naming it once.
+    const std::string was = kStored + "suite.floor = [\"f2: 0.5 0.05 1.3\"]\nsuite.sa-period = 0.5\nsuite.sa-damping = 0.05\n";
+    EXPECT_EQ(refusal(kStored + "suite.floor = [\"f2: 0.50 0.05 1.30\"]\nsuite.sa-period = 0.5\n", was), "");
+}
+
 // A design frees only what cuts up the work: no attribute of its files checks the refinement, so
 // its options do (design_resume.sh resumes a design with another --refine).
 TEST(ResumeCheck, ADesignMayChangeOnlyHowTheWorkIsCutUp) {

@@ -215,8 +215,23 @@ add_test(NAME cli.version_on_stdout COMMAND bash -c "out=$(\"$0\" --version 2>/d
 
 # rocksweep suite: its own options, and the spectra options it would otherwise ignore.
 set(SUITE ${PROJECT_SOURCE_DIR}/configs/records_suite.csv)
-bad_input(suite_measure "--intensity-measure = sa is invalid: not a known word; allowed: one of pga, pgv, pga-ratio, scale"
-          suite --config ${CFG} --suite ${SUITE} --intensity-measure sa -o ${OUT})
+bad_input(suite_measure "--intensity-measure = psa is invalid: not a known word; allowed: one of pga, pgv, pga-ratio, scale, sa, pfa"
+          suite --config ${CFG} --suite ${SUITE} --intensity-measure psa -o ${OUT})
+# Floors and Sa (docs/suite.md, "Floors"): the option as written, the value, the range.
+bad_input(suite_floor_damping "--floor = f2: 0.5 1.2 1 is invalid: damping ratios 0 <= zeta < 1 \\(0.5 1.2 1\\)"
+          suite --config ${CFG} --suite ${SUITE} --floor "f2: 0.5 1.2 1" -o ${OUT})
+bad_input(suite_floor_numbers "--floor = f2: 0.5 0.05 is invalid: three numbers per mode"
+          suite --config ${CFG} --suite ${SUITE} --floor "f2: 0.5 0.05" -o ${OUT})
+bad_input(suite_floor_twice "--floor = f2 is invalid: distinct names \\(a floor is listed twice\\)"
+          suite --config ${CFG} --suite ${SUITE} --floor "f2: 0.5 0.05 1" "f2: 0.3 0.05 1" -o ${OUT})
+bad_input(suite_sa_period "--sa-period = 0 is invalid: out of range; allowed: a number in \\[0.001, 100\\] s"
+          suite --config ${CFG} --suite ${SUITE} --intensity-measure sa --sa-period 0 -o ${OUT})
+bad_input(design_two_floors "--floor = 2 floors is invalid: one --floor with design --suite"
+          design --config ${CFG} --suite ${SUITE} --floor ground "f2: 0.5 0.05 1" -o ${OUT})
+bad_input(design_floor_without_suite "--floor = f2: 0.5 0.05 1 is invalid: an option of design --suite"
+          design --config ${CFG} --floor "f2: 0.5 0.05 1" -o ${OUT})
+bad_input(simulate_floor_without_record "--floor = f2: 0.5 0.05 1 is invalid: only with --record"
+          simulate --config ${CFG} --floor "f2: 0.5 0.05 1" -o ${OUT}.csv)
 bad_input(suite_missing "--suite = \\(not given\\) is invalid: .*a suite of records \\(CSV\\), or --synthetic-count N" suite --config ${CFG} -o ${OUT})
 bad_input(suite_no_such_file "--suite = /no/such.csv is invalid: no such file" suite --config ${CFG} --suite /no/such.csv -o ${OUT})
 bad_input(suite_refine "--refine = 8 is invalid: 0 for suite" suite --config ${CFG} --suite ${SUITE} --refine 8 -o ${OUT})

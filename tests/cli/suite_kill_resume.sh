@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
-# suite_kill_resume.sh ROCKSWEEP CONFIG SUITE WORKDIR NP [ARGS...]
+# suite_kill_resume.sh ROCKSWEEP CONFIG SUITE WORKDIR NP [OPTION...]
 # SIGKILL a suite sweep at several moments; each time the file (if any) must open, and
 # --resume must end with exactly the datasets of an uninterrupted run. The kills come at fixed
 # delays after the output file first appears (its first checkpoint), not after the start, so
 # that a faster engine or a slower MPI start does not move them past the run's end: 64 levels,
-# about 3 s on one rank. SUITE "-": no CSV; ARGS (synthetic motions) are added; LEVELS and RADII
-# in the environment replace the 64 levels and 4 sizes (many motions need fewer).
+# about 3 s on one rank. SUITE "-": no CSV; the OPTIONs (synthetic motions, floors, measures)
+# are added to every run; LEVELS and RADII in the environment replace the 64 levels and 4 sizes
+# (many motions need fewer).
 set -eu
-rs="$1"; cfg="$2"; suite="$3"; dir="$4"; np="$5"; shift 5
+rs="$1"; cfg="$2"; suite="$3"; dir="$4"; np="$5"; shift 5  # the rest: options added to every run
 source "$(dirname "${BASH_SOURCE[0]}")/kill_job.sh"
 mkdir -p "$dir"
 source_args=(--suite "$suite")

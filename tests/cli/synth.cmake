@@ -59,7 +59,13 @@ add_test(NAME cli.suite_synthetic_ranks_identical
 add_test(NAME cli.suite_synthetic_kill_resume.mpirun=2
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/suite_kill_resume.sh ${RS} ${CFG} - ${CMAKE_CURRENT_BINARY_DIR}/suite_syn_kill 2
                  --synthetic-count 10 ${FIT})
-set_tests_properties(cli.suite_synthetic_ranks_identical cli.suite_synthetic_kill_resume.mpirun=2 PROPERTIES TIMEOUT 300 PROCESSORS 2)
+# On a floor too: made motions pass through the building as read records do, measured (PFA) once
+# and made again in the cells, identically on 1, 2 and 3 ranks.
+add_test(NAME cli.suite_synthetic_floor_ranks_identical
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/suite_ranks.sh ${RS} ${CFG} - ${CMAKE_CURRENT_BINARY_DIR}/suite_syn_floor_ranks
+                 --synthetic-count 6 ${FIT} --floor ground "f2: 0.5 0.05 1.3; 0.17 0.05 -0.4" --intensity-measure pfa)
+set_tests_properties(cli.suite_synthetic_ranks_identical cli.suite_synthetic_kill_resume.mpirun=2
+                     cli.suite_synthetic_floor_ranks_identical PROPERTIES TIMEOUT 300 PROCESSORS 2)
 
 # Made on the ranks or written by synth and read back as a record suite: the same motions, so the
 # same results, bit for bit (the files' 17 digits read back to the generator's bits).

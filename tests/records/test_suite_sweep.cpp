@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "rocksweep/core/errors.hpp"
+#include "rocksweep/motion/response_spectrum.hpp"
 #include "rocksweep/physics/integrator.hpp"
 #include "rocksweep/records/suite_products.hpp"
 #include "rocksweep/records/suite_sweep.hpp"
@@ -24,9 +25,17 @@ std::vector<Scenario> scenarios() {
             {"adaptive_rho0.1", adaptive_anchorage(kBlock, fu, kBlock.alpha_rad, 0.1), 1.0, 0.1}};
 }
 
-SuiteSpec shipped(IntensityMeasure m, std::vector<double> radii = {}, std::vector<double> alphas = {}) {
+SuiteSpec shipped(IntensityMeasure m, std::vector<double> radii = {}, std::vector<double> alphas = {},
+                  SuiteMotions motions = {}) {
     return make_suite_spec(ROCKSWEEP_CONFIGS_DIR "/records_suite.csv", kBlock, scenarios(), m, Axis{0.1, 0.9, 5},
-                           std::move(radii), std::move(alphas));
+                           std::move(radii), std::move(alphas), std::move(motions));
+}
+
+SuiteMotions two_floors() {
+    SuiteMotions m;
+    m.floors = {motion::parse_floor("floor", "ground"), motion::parse_floor("floor", "f2: 0.5 0.05 1.3; 0.17 0.05 -0.4")};
+    m.sa = motion::Oscillator{0.5, 0.05};
+    return m;
 }
 
 /// A suite of `n` one-sample-pair records of PGA 0.5 g, for products on made-up outcomes.
@@ -223,4 +232,105 @@ TEST(SuiteProducts, FragilityStripesCountTheRecordsAndLeaveOutUnconvergedRuns) {
     ASSERT_EQ(f.fits.size(), 2u);
     // Overturning: none, none, 3 of 4 at the top level: the median lies above the second level.
     EXPECT_GT(f.fits[1].curve.median, spec.intensity.at(1));
+}
+
+TEST(SuiteSweep, EveryScenarioStandsOnEveryFloorAndACellReadsItsFloorsMotion) {
+    const SuiteSpec ground = shipped(IntensityMeasure::pga_g);
+    EXPECT_EQ(ground.scenarios[0].name, "free");  // the ground alone: names as before floors
+    const SuiteSpec spec = shipped(IntensityMeasure::pga_g, {}, {}, two_floors());
+    ASSERT_EQ(spec.scenarios.size(), 6u);
+    EXPECT_EQ(spec.scenarios[0].name, "free@ground");
+    EXPECT_EQ(spec.scenarios[5].name, "adaptive_rho0.1@f2");
+    EXPECT_EQ(spec.floor_of(4), 1u);
+    // scenario 4 (constant on f2), record 3, level 2
+    const CellModel c = spec.cell(spec.index({4, 3, 0, 0, 2}));
+    const Record floor = on_floor(spec.records[3].record, spec.floors[1]);
+    const int m = motion::floor_oversampling(spec.floors[1], spec.records[3].record.dt_s);
+    EXPECT_EQ(m, 9);  // T = 0.17 s at dt = 0.02 s: h <= T / 70
+    ASSERT_EQ(c.pulse.record->size(), (spec.records[3].record.ax_g.size() - 1) * m + 1);
+    EXPECT_DOUBLE_EQ(c.pulse.record_dt_s, spec.records[3].record.dt_s / m);
+    EXPECT_EQ((*c.pulse.record)[777], floor.ax_g[777] * standard_gravity / kBlock.gravity);
+    EXPECT_EQ(c.pulse.record_scale, spec.scale_factor(3, 0, 2, 1));
+    EXPECT_EQ(c.anchorage, AnchorageKind::constant);
+    double pfa = 0.0;
+    for (double x : floor.ax_g) pfa = std::max(pfa, std::abs(x));
+    EXPECT_EQ(spec.records[3].floors[1].pfa_g, pfa);
+    EXPECT_EQ(spec.records[3].floors[0].pfa_g, spec.records[3].measures.pga_g);
+    EXPECT_EQ(spec.records[3].floors[1].spectrum_g.size(), motion::floor_spectrum_periods().size());
+}
+
+TEST(SuiteSweep, SaOfTheGroundAndPfaOfTheScenariosFloorReachEachLevel) {
+    const SuiteSpec sa = shipped(IntensityMeasure::sa_g, {}, {}, two_floors());
+    const SuiteSpec pfa = shipped(IntensityMeasure::pfa_g, {}, {}, two_floors());
+    for (std::size_t r = 0; r < sa.records.size(); ++r) {
+        SCOPED_TRACE(r);
+        EXPECT_EQ(sa.records[r].sa_g, motion::spectral_acceleration(sa.records[r].record.ax_g, sa.records[r].record.dt_s, {0.5, 0.05}));
+        for (std::size_t l = 0; l < sa.intensity.points; ++l) {
+            // Sa is linear in the ground, so on every floor the factor is the ground's.
+            EXPECT_NEAR(sa.scale_factor(r, 0, l, 1) * sa.records[r].sa_g, sa.intensity.at(l), 1e-12);
+            for (std::size_t f = 0; f < 2; ++f) {
+                const CellModel c = pfa.cell(pfa.index({3 * f, r, 0, 0, l}));
+                EXPECT_NEAR(c.pulse.peak_ax() * kBlock.gravity / standard_gravity, pfa.intensity.at(l), 1e-12);
+            }
+        }
+    }
+}
+
+namespace {
+
+/// Made motions that are the shipped suite's records: a made motion must reach every floor, be
+/// measured there and be integrated exactly as the same motion read from its file.
+class RecordsAsMade : public MotionSource {
+public:
+    explicit RecordsAsMade(std::vector<Record> records) : records_(std::move(records)) {}
+    std::size_t size() const override { return records_.size(); }
+    std::string name(std::size_t i) const override { return "made_" + std::to_string(i); }
+    Record motion(std::size_t i) const override { return records_.at(i); }
+    std::string describe() const override { return "the shipped records"; }
+
+private:
+    std::vector<Record> records_;
+};
+
+}  // namespace
+
+TEST(SuiteSweep, AMadeMotionOnAFloorIsMeasuredAndIntegratedAsTheSameMotionRead) {
+    const SuiteSpec read = shipped(IntensityMeasure::pfa_g, {}, {}, two_floors());
+    std::vector<Record> records;
+    for (const SuiteMember& m : read.records) records.push_back(m.record);
+    SuiteMotions motions = two_floors();
+    motions.made = std::make_shared<RecordsAsMade>(records);
+    const SuiteSpec made = make_suite_spec("", kBlock, scenarios(), IntensityMeasure::pfa_g, Axis{0.1, 0.9, 5}, {}, {},
+                                           std::move(motions));
+    ASSERT_EQ(made.records.size(), read.records.size());
+    ASSERT_EQ(made.scenarios.size(), read.scenarios.size());
+    for (std::size_t r = 0; r < read.records.size(); ++r) {
+        SCOPED_TRACE(r);
+        const SuiteMember &a = read.records[r], &b = made.records[r];
+        EXPECT_EQ(b.motion, static_cast<std::ptrdiff_t>(r));
+        EXPECT_TRUE(b.record.ax_g.empty());  // its samples dropped once measured
+        EXPECT_EQ(b.measures.pga_g, a.measures.pga_g);
+        EXPECT_EQ(b.sa_g, a.sa_g);
+        ASSERT_EQ(b.floors.size(), 2u);
+        for (std::size_t f = 0; f < 2; ++f) {
+            EXPECT_FALSE(b.floors[f].pulse.record);
+            EXPECT_EQ(b.floors[f].pfa_g, a.floors[f].pfa_g);
+            EXPECT_EQ(b.floors[f].spectrum_g, a.floors[f].spectrum_g);
+        }
+    }
+    EXPECT_THROW(made.cell(0), std::logic_error);  // a made motion's cell needs its motion
+    // The last three records on the ground's last scenario and the first three on f2's first (the
+    // floor changes inside the range), in one batch and cell by cell (any chunking, any rank count).
+    const std::size_t first = made.index({2, 9, 0, 0, 0}), count = made.index({3, 3, 0, 0, 0}) - first;
+    std::vector<CellResult> a(count), batch(count), single(count);
+    compute_suite_cells(read, IntegratorSettings{}, first, count, a.data());
+    compute_suite_cells(made, IntegratorSettings{}, first, count, batch.data());
+    for (std::size_t i = 0; i < count; ++i) compute_suite_cells(made, IntegratorSettings{}, first + i, 1, &single[i]);
+    std::size_t overturned = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+        EXPECT_TRUE(bitwise_equal(batch[i], a[i])) << "cell " << first + i;
+        EXPECT_TRUE(bitwise_equal(single[i], a[i])) << "cell " << first + i;
+        overturned += a[i].outcome != Outcome::safe;
+    }
+    EXPECT_GT(overturned, 0u);  // the floors' motions did something to compare
 }

@@ -71,6 +71,7 @@ struct SingleOptions {
     int record_column = 0;               ///< 1-based, the time column counted; 0: the format's default
     std::string record_vertical;         ///< the vertical component's file ("" with a column: --record's file)
     int record_vertical_column = 0;      ///< its column, 1-based as record_column; 0: none or the format's default
+    std::string floor;                   ///< the floor the block stands on (motion/floor_filter.hpp); "": the ground
 };
 
 struct Options {
@@ -93,9 +94,9 @@ IntegratorSettings make_settings(const NumericsOptions& o);
 SweepSpec make_sweep_spec(const Options& o);
 /// How `simulate --record ...` asks for its record to be read (record.hpp).
 RecordSource record_source(const SingleOptions& s);
-/// The single cell of `rocksweep simulate`; its record, if it has one, into `record` (when
-/// given) for the caller to report. A record of implausible PGA is refused (record.hpp) unless
-/// --record-any-pga.
+/// The single cell of `rocksweep simulate`; its record, if it has one, as read (on the ground,
+/// before any --floor) into `record` (when given) for the caller to report. A record of
+/// implausible PGA as read is refused (record.hpp) unless --record-any-pga.
 CellModel make_single_cell(const Options& o, Record* record = nullptr);
 /// Whether the option `name` (a config key: "mass", "omega-ratio") defined the run of `command`
 /// ("sweep" or "simulate") with options `o`, and so belongs in its /provenance/config: not how

@@ -23,7 +23,9 @@ const std::set<std::string>& work_options();
 /// (part, merge's parts), and what the file's own attributes compare more precisely than the
 /// config's text can (refine and refine-axes, accepted in any order and for files from before
 /// they were recorded; axis, by its values; scenario, by the scenario groups the file holds, so
-/// that --scenario naming them all resumes).
+/// that --scenario naming them all resumes; floor, sa-period and sa-damping, by the suite file's
+/// floors and sa_oscillator in canonical form, so that "0.50" resumes a floor written "0.5" and
+/// the refusal names them once).
 const std::set<std::string>& resumable_freely();
 
 /// Throws InputError(option, value now, "VALUE IN FILE, as PATH was computed with (...)") for the

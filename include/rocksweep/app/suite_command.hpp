@@ -26,10 +26,14 @@ struct SuiteCommand {
     std::vector<double> alpha_range;  ///< empty: the block's own alpha
     std::size_t alpha_points = 1;
     std::vector<double> damage_states{0.1, 0.3, 0.5};  ///< theta_max / alpha; overturning is always added
+    std::vector<std::string> floors;  ///< --floor, as written (motion/floor_filter.hpp); empty: the ground
+    double sa_period_s = 1.0;         ///< T of the Sa measure [s]
+    double sa_damping = 0.05;         ///< zeta of the Sa measure
 };
 
-/// The options that say which records at which levels (--suite, --intensity-measure,
-/// --intensity-range, --intensity-points): the hazard of `suite`, and of `design --suite`.
+/// The options that say which records at which levels and where the block stands (--suite,
+/// --intensity-measure, --intensity-range, --intensity-points, --floor, --sa-period,
+/// --sa-damping): the hazard of `suite`, and of `design --suite`.
 void add_suite_hazard_options(CLI::App& sub, SuiteCommand& cmd);
 
 /// Adds `suite` and its own options to `app`; the model options are the app's (fallthrough).

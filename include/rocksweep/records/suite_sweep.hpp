@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "rocksweep/grid/sweep.hpp"
+#include "rocksweep/motion/floor_filter.hpp"
 #include "rocksweep/records/intensity.hpp"
 #include "rocksweep/records/record_suite.hpp"
 
@@ -21,10 +22,12 @@ enum class IntensityMeasure {
     pgv_m_s,    ///< peak ground velocity [m/s]
     pga_ratio,  ///< PGA / (g tan alpha), the block's own g and alpha
     scale,      ///< the factor itself
+    sa_g,       ///< Sa(T, zeta) of the ground / standard g, T and zeta the suite's
+    pfa_g,      ///< peak floor acceleration / standard g: the motion of the scenario's own floor
 };
-/// "pga", "pgv", "pga-ratio", "scale" (the option's words); throws InputError(field, text, ...).
+/// "pga", "pgv", "pga-ratio", "scale", "sa", "pfa" (the option's words); throws InputError(field, text, ...).
 IntensityMeasure parse_intensity_measure(const std::string& field, const std::string& text);
-/// The dataset name of the measure: "pga_g", "pgv_m_s", "pga_ratio", "scale".
+/// The dataset name of the measure: "pga_g", "pgv_m_s", "pga_ratio", "scale", "sa_g", "pfa_g".
 std::string to_string(IntensityMeasure m);
 const char* intensity_units(IntensityMeasure m);
 const char* intensity_long_name(IntensityMeasure m);
@@ -43,6 +46,15 @@ public:
     virtual std::string describe() const = 0;
 };
 
+/// A record on one floor: the motion the block there stands on, and its measures.
+struct FloorResponse {
+    /// the floor's motion at the block's g and scale 1 (the ground's vertical); unset for a
+    /// made motion, whose samples are made again in the cells
+    Pulse pulse;
+    double pfa_g = 0.0;               ///< peak floor acceleration / standard g (the PGA on the ground)
+    std::vector<double> spectrum_g;   ///< 5 %-damped Sa at motion::floor_spectrum_periods() / standard g
+};
+
 /// One record of the suite as every cell sees it: its samples (standard g, the suite's own
 /// scale applied) and its measures, read once.
 struct SuiteMember {
@@ -51,6 +63,18 @@ struct SuiteMember {
     IntensityMeasures measures;
     Pulse pulse;  ///< the record at the block's g and scale 1, whose samples every cell shares (may be unset)
     std::ptrdiff_t motion = -1;  ///< its index in SuiteSpec::motions; -1: a record read from a file
+    double sa_g = 0.0;                 ///< Sa(T, zeta) of the ground at the suite's oscillator / standard g
+    std::vector<FloorResponse> floors;  ///< one per SuiteSpec::floors
+};
+
+/// Where the blocks of a suite stand and the oscillator Sa is measured with: the floors (none:
+/// the ground alone, the scenarios as configured; otherwise every scenario on every floor,
+/// named SCENARIO@FLOOR) and Sa's T and zeta; and the made motions after the file's records
+/// (may be null), which pass through the floors and are measured as a read record is.
+struct SuiteMotions {
+    std::vector<motion::Floor> floors;
+    motion::Oscillator sa{1.0, 0.05};
+    std::shared_ptr<const MotionSource> made;
 };
 
 struct SuiteSpec {
@@ -65,8 +89,11 @@ struct SuiteSpec {
     Axis intensity;               ///< levels of `measure`
     std::vector<double> alphas_rad;  ///< slenderness angles alpha [rad]
     std::vector<double> radii_m;     ///< block sizes R [m]
-    std::vector<Scenario> scenarios;  ///< anchorages of the configured block, scaled with it
+    std::vector<Scenario> scenarios;  ///< anchorages of the configured block, scaled with it, on each floor
     std::shared_ptr<const MotionSource> motions;  ///< made motions after the file's records (may be null)
+    std::vector<motion::Floor> floors;       ///< at least one ({ground} by default)
+    std::vector<std::size_t> scenario_floor;  ///< the floor (index into floors) of each scenario
+    motion::Oscillator sa{1.0, 0.05};        ///< the oscillator of the sa_g measure
 
     std::size_t cells_per_scenario() const { return records.size() * alphas_rad.size() * radii_m.size() * intensity.points; }
     std::size_t cell_count() const { return cells_per_scenario() * scenarios.size(); }
@@ -77,23 +104,33 @@ struct SuiteSpec {
     };
     Coordinates coordinates(std::size_t index) const;
     std::size_t index(const Coordinates& c) const;
-    /// Cell `index`; `ground` (the cell's own motion at the block's g and scale 1) must be given
-    /// for a made motion, whose samples the spec does not hold.
+    /// Cell `index`; `ground` (the cell's own motion on its scenario's floor, at the block's g
+    /// and scale 1) must be given for a made motion, whose samples the spec does not hold.
     CellModel cell(std::size_t index, const Pulse* ground = nullptr) const;
+    /// The floor (index into floors) scenario `s` stands on; 0 when none is recorded.
+    std::size_t floor_of(std::size_t s) const { return scenario_floor.empty() ? 0 : scenario_floor.at(s); }
     /// The factor record `r` is multiplied by at intensity level `level` on blocks of slenderness
-    /// alphas_rad[alpha] (only PGA / (g tan alpha) depends on it).
-    double scale_factor(std::size_t r, std::size_t alpha, std::size_t level) const;
+    /// alphas_rad[alpha] (only PGA / (g tan alpha) depends on it) standing on floors[floor]
+    /// (only PFA depends on it). The ground and every floor's motion scale together: the
+    /// building is linear.
+    double scale_factor(std::size_t r, std::size_t alpha, std::size_t level, std::size_t floor = 0) const;
     /// The configured block reshaped to slenderness alpha and size R (reshaped_block).
     Block block_of(double alpha_rad, double radius_m) const;
 };
 
 /// Reads the suite file and every record in it (each record's own checks apply), then adds the
-/// made `motions` (measured once each; either may be absent: an empty path, a null source).
-/// `scenarios` are those of the configured block; empty `alphas_rad` or `radii_m` mean the
-/// block's own. Throws InputError naming the option or the suite line.
+/// made motions of `motions` (either may be absent: an empty path, a null source); passes each
+/// through every floor of `motions` and measures it there (a made motion's samples are then
+/// dropped). `scenarios` are those of the configured block; empty `alphas_rad` or `radii_m`
+/// mean the block's own. Throws InputError naming the option or the suite line.
 SuiteSpec make_suite_spec(const std::string& suite_path, const Block& block, std::vector<Scenario> scenarios,
                           IntensityMeasure measure, Axis intensity, std::vector<double> radii_m,
-                          std::vector<double> alphas_rad = {}, std::shared_ptr<const MotionSource> motions = nullptr);
+                          std::vector<double> alphas_rad = {}, SuiteMotions motions = {});
+
+/// `ground` as it reaches `floor`: the horizontal component through the floor's filters, the
+/// vertical as it is (the building is taken as rigid vertically; docs/physics.md), both at
+/// motion::floor_oversampling samples per step of the record.
+Record on_floor(const Record& ground, const motion::Floor& floor);
 
 /// Computes cells [first, first + count) of `spec` into `out`; a made motion is made once for
 /// the consecutive cells that share it.
