@@ -72,6 +72,9 @@ CLI::App* add_suite_command(CLI::App& app, SuiteCommand& cmd) {
     s->add_option("--damage-states", cmd.damage_states,
                   "Damage states theta_max / alpha >= each value, for the fragility curves (overturning is always one)")
         ->check(number_in(0, 1e3, "", true))->capture_default_str();
+    s->add_flag("--check-sensitivity", cmd.check_sensitivity,
+                "Run each run again with the record's scale times (1 + 1e-9) at the tolerance / 100 and flag those whose "
+                "outcome or damage state changes (about 2-3x the cost; docs/suite.md)");
     return s;
 }
 
@@ -163,6 +166,8 @@ Plan make_plan(const Options& opts, const SuiteCommand& cmd) {
     Plan p{make_suite_spec(opts, cmd), {}, make_settings(opts.numerics)};
     for (double x : cmd.damage_states) p.states.push_back({x, false});
     p.states.push_back({0.0, true});
+    p.spec.sensitivity.on = cmd.check_sensitivity;
+    p.spec.sensitivity.damage_ratios = cmd.damage_states;
     const double cells = static_cast<double>(p.spec.cell_count());
     require_memory("intensity-points", std::to_string(cmd.intensity_points), cells * static_cast<double>(SweepResults::bytes_per_cell()),
                    "the results of " + format_short(cells) + " cells");
@@ -215,13 +220,17 @@ void summarise(const Plan& plan, const SweepResults& r, std::ostream& log) {
     int width = 22;  // names on floors ("adaptive_rho0.1@f4_plinth") run longer
     for (const Scenario& sc : spec.scenarios) width = std::max(width, static_cast<int>(sc.name.size()) + 2);
     for (std::size_t s = 0; s < spec.scenarios.size(); ++s) {
-        const FragilityFit fit = suite_fragility(spec, r, s, {plan.states.back()}).fits.at(a * spec.radii_m.size() + j);
+        const SuiteFragility fr = suite_fragility(spec, r, s, {plan.states.back()});
+        const std::size_t k = a * spec.radii_m.size() + j;
+        const FragilityFit& fit = fr.fits.at(k);
         log << "  " << std::left << std::setw(width) << spec.scenarios[s].name << std::right;
         if (fit.status == FitStatus::ok)
             log << "median " << fit.curve.median << units << " (95 % " << fit.median_lo << " to " << fit.median_hi << "), beta "
-                << fit.curve.beta << "\n";
+                << fit.curve.beta;
         else
-            log << to_string(fit.status) << "\n";
+            log << to_string(fit.status);
+        if (spec.sensitivity.on) log << "; " << fr.sensitive.at(k) << " of its runs flagged sensitive";
+        log << "\n";
     }
 }
 

@@ -105,6 +105,7 @@ void SweepResults::resize(std::size_t n) {
     broken.assign(n, 0);
     mu_required.assign(n, NAN);
     pivot_uplift.assign(n, 0);
+    sensitive.assign(n, 0);
     done.assign(n, 0);
 }
 
@@ -118,6 +119,7 @@ void SweepResults::store(std::size_t i, const CellResult& r) {
     broken[i] = r.broken;
     mu_required[i] = r.mu_required;
     pivot_uplift[i] = r.pivot_uplift;
+    sensitive[i] = r.sensitive;
     done[i] = 1;
 }
 

@@ -187,6 +187,19 @@ void write_result_columns(const GridGroup& grid, const SweepResults& r, std::siz
                "boundary refinement from a uniform square of computed cells (other datasets NaN/0)");
 }
 
+void write_sensitive_column(const GridGroup& grid, const SweepResults& r, std::size_t first) {
+    const std::uint8_t flags[] = {0, 1};
+    write_code(grid, "sensitive", r.sensitive, first, "outcome or damage state changed by a perturbed, tighter rerun",
+               "flag_values", flags, "robust sensitive",
+               "--check-sensitivity: rerun with the record's scale times (1 + 1e-9) at the tolerance / 100; meaningful "
+               "where done = 1 (docs/suite.md, Sensitive runs)");
+}
+
+void read_sensitive_column(const h5::Group& g, std::span<const GridAxis> axes, SweepResults& r, std::size_t first,
+                           const Mismatch& mismatch) {
+    read_column(g, "sensitive", axes, r.sensitive, first, mismatch);
+}
+
 void read_result_columns(const h5::Group& g, std::span<const GridAxis> axes, SweepResults& r, std::size_t first,
                          const Mismatch& mismatch) {
     read_column(g, "outcome", axes, r.outcome, first, mismatch);

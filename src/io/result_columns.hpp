@@ -65,6 +65,11 @@ void write_result_columns(const GridGroup& grid, const SweepResults& r, std::siz
 void read_result_columns(const h5::Group& g, std::span<const GridAxis> axes, SweepResults& r, std::size_t first,
                          const Mismatch& mismatch);
 
+/// The suite's `sensitive` flags (--check-sensitivity), written and read like the columns above.
+void write_sensitive_column(const GridGroup& grid, const SweepResults& r, std::size_t first);
+void read_sensitive_column(const h5::Group& g, std::span<const GridAxis> axes, SweepResults& r, std::size_t first,
+                           const Mismatch& mismatch);
+
 /// /provenance: what produced the file (everything there may differ between two runs): version,
 /// config, created_utc, wall_s; returns the group, for a writer's own additions (ranks, where
 /// the run had them). Every file rocksweep writes but the basin's has it.

@@ -66,6 +66,14 @@ std::vector<io::NamedText> root_texts(const SuiteSpec& spec) {
             {"sa_oscillator", "T = " + shortest(spec.sa.period_s) + " s, zeta = " + shortest(spec.sa.damping)}};
 }
 
+/// The suite's settings beyond the integrator's: compared on resume, naming the option.
+std::vector<io::Setting> suite_settings(const SuiteSpec& spec, const IntegratorSettings& settings) {
+    std::vector<io::Setting> all = io::numerics_settings(settings, spec.impact_threshold, spec.equations);
+    // Files from before --check-sensitivity were not checked.
+    all.push_back({"check_sensitivity", "check-sensitivity", spec.sensitivity.on ? "on" : "off", 0.0, true, "off"});
+    return all;
+}
+
 double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
     const std::size_t n = v.size();
@@ -247,6 +255,11 @@ void write_fragility(const h5::Group& scenario, const SuiteSpec& spec, const Sui
         for (const FragilityFit& fit : fr.fits) v.push_back(c.get(fit));
         write_measure_on(grid, c.name, v, {"damage_state", "alpha_rad", "radius_m"}, c.units, c.long_name);
     }
+    if (spec.sensitivity.on) {
+        const h5::Dataset ds = grid.write_on<std::int32_t>("sensitive_runs", fr.sensitive, {"damage_state", "alpha_rad", "radius_m"});
+        h5::write_attribute(ds, "units", "1");
+        h5::write_attribute(ds, "long_name", "runs of the fit (converged) flagged sensitive");
+    }
     std::vector<std::uint8_t> status;
     for (const FragilityFit& fit : fr.fits) status.push_back(static_cast<std::uint8_t>(fit.status));
     const h5::Dataset ds = grid.write_on<std::uint8_t>("fit_status", status, {"damage_state", "alpha_rad", "radius_m"});
@@ -260,7 +273,7 @@ void write_contents(const h5::File& f, const SuiteSpec& spec, const SweepResults
     h5::write_attribute(f, "format_version", format_version);
     h5::write_attribute(f, "kind", kind);
     io::write_numbers(f, io::block_numbers(spec.block));
-    io::write_settings(f, io::numerics_settings(settings, spec.impact_threshold, spec.equations));
+    io::write_settings(f, suite_settings(spec, settings));
     for (const io::NamedText& t : root_texts(spec)) h5::write_attribute(f, t.name, t.value);
     h5::write_attribute(f, "intensity_units", intensity_units(spec.measure));
     h5::write_attribute(f, "intensity_long_name", intensity_long_name(spec.measure));
@@ -283,6 +296,7 @@ void write_contents(const h5::File& f, const SuiteSpec& spec, const SweepResults
         h5::write_attribute(g, "floor", spec.floors[spec.floor_of(s)].name);
         const GridGroup grid(g, axes);
         io::write_result_columns(grid, r, s * spec.cells_per_scenario());
+        if (spec.sensitivity.on) io::write_sensitive_column(grid, r, s * spec.cells_per_scenario());
         if (!complete) continue;
         write_overturning(g, spec, overturning_spectrum(spec, r, s));
         write_fragility(g, spec, suite_fragility(spec, r, s, states));
@@ -296,7 +310,7 @@ SweepResults read_contents(const std::string& path, const h5::File& f, const Sui
         throw InputError("suite file", path, "a file written for the same suite sweep (" + what + ")");
     };
     io::compare_numbers(f, io::block_numbers(spec.block), mismatch);
-    io::compare_settings(path, f, io::numerics_settings(settings, spec.impact_threshold, spec.equations));
+    io::compare_settings(path, f, suite_settings(spec, settings));
     io::compare_texts(f, root_texts(spec), mismatch);
     const h5::Group records = f.open_group("records");
     const GridAxis record_axes[] = {record_axis(spec), alpha_axis(spec), intensity_axis(spec)};
@@ -324,6 +338,7 @@ SweepResults read_contents(const std::string& path, const h5::File& f, const Sui
         io::compare_numbers(g, io::scenario_numbers(spec.scenarios[s]), mismatch);
         if (const std::string diff = axes_difference(g, axes); !diff.empty()) mismatch(g.name() + ": " + diff);
         io::read_result_columns(g, axes, r, s * spec.cells_per_scenario(), mismatch);
+        if (spec.sensitivity.on) io::read_sensitive_column(g, axes, r, s * spec.cells_per_scenario(), mismatch);
     }
     return r;
 }

@@ -59,12 +59,14 @@ SuiteFragility suite_fragility(const SuiteSpec& spec, const SweepResults& r, std
     for (std::size_t d = 0; d < states.size(); ++d)
         for (std::size_t b = 0; b < blocks; ++b) {
             std::vector<Stripe> stripes;
+            std::int32_t flagged = 0;
             for (std::size_t l = 0; l < levels; ++l) {
                 Stripe st{spec.intensity.at(l), 0, 0};
                 for (std::size_t rec = 0; rec < spec.records.size(); ++rec) {
                     const std::size_t i = spec.index({s, rec, b / spec.radii_m.size(), b % spec.radii_m.size(), l});
                     if (r.outcome[i] == not_converged) continue;
                     ++st.total;
+                    flagged += r.sensitive.size() == r.size() && r.sensitive[i] ? 1 : 0;
                     st.exceed += reaches({st.intensity, r.max_rotation[i], r.outcome[i] != 0}, states[d]) ? 1 : 0;
                 }
                 const std::size_t k = (d * blocks + b) * levels + l;
@@ -80,6 +82,7 @@ SuiteFragility suite_fragility(const SuiteSpec& spec, const SweepResults& r, std
                 fit = fit_stripes(stripes);
             }
             f.fits.push_back(fit);
+            f.sensitive.push_back(flagged);
         }
     return f;
 }

@@ -224,7 +224,30 @@ void compute_suite_cells(const SuiteSpec& spec, const IntegratorSettings& settin
         }
         cells[i] = spec.cell(first + i, &ground);
     }
+    if (!spec.sensitivity.on) {
+        integrate_cells(cells, std::span<CellResult>(out, count), settings, lanes);
+        return;
+    }
+    std::vector<CellModel> perturbed = cells;
+    for (CellModel& c : perturbed) c.pulse.record_scale *= 1.0 + SensitivityCheck::scale_step;
     integrate_cells(cells, std::span<CellResult>(out, count), settings, lanes);
+    std::vector<CellResult> again(count);
+    integrate_cells(perturbed, again, SensitivityCheck::tighter(settings), lanes);
+    for (std::size_t i = 0; i < count; ++i) out[i].sensitive = spec.sensitivity.differ(out[i], again[i]) ? 1 : 0;
+}
+
+IntegratorSettings SensitivityCheck::tighter(IntegratorSettings s) {
+    if (s.tolerance > 0.0) s.tolerance /= tolerance_divisor;
+    else if (s.method == Method::events) s.steps_per_period *= std::sqrt(std::sqrt(tolerance_divisor));
+    else s.paper_dt_s /= std::sqrt(std::sqrt(tolerance_divisor));
+    return s;
+}
+
+bool SensitivityCheck::differ(const CellResult& a, const CellResult& b) const {
+    if (a.outcome != b.outcome) return true;
+    for (double ratio : damage_ratios)
+        if ((a.max_rotation >= ratio) != (b.max_rotation >= ratio)) return true;
+    return false;
 }
 
 }  // namespace rocksweep

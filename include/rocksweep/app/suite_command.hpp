@@ -29,6 +29,7 @@ struct SuiteCommand {
     std::vector<std::string> floors;  ///< --floor, as written (motion/floor_filter.hpp); empty: the ground
     double sa_period_s = 1.0;         ///< T of the Sa measure [s]
     double sa_damping = 0.05;         ///< zeta of the Sa measure
+    bool check_sensitivity = false;   ///< rerun each run perturbed and flag those that change (SensitivityCheck)
 };
 
 /// The options that say which records at which levels and where the block stands (--suite,

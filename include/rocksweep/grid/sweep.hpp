@@ -99,12 +99,13 @@ struct SweepResults {
     std::vector<std::uint8_t> broken;
     std::vector<double> mu_required;
     std::vector<std::uint8_t> pivot_uplift;
+    std::vector<std::uint8_t> sensitive;  ///< CellResult::sensitive (written by suite files only)
     std::vector<std::uint8_t> done;  ///< 0 pending, 1 computed, 2 outcome inferred (refine.hpp)
 
     void resize(std::size_t n);
     /// Bytes one cell takes across the columns above: what rank 0 holds per cell of a sweep.
     static constexpr std::size_t bytes_per_cell() {
-        return sizeof(std::uint8_t) * 4 + sizeof(double) * 4 + sizeof(std::int32_t) * 2;
+        return sizeof(std::uint8_t) * 5 + sizeof(double) * 4 + sizeof(std::int32_t) * 2;
     }
     std::size_t size() const { return outcome.size(); }
     void store(std::size_t index, const CellResult& r);

@@ -30,6 +30,9 @@ struct CellResult {
     Outcome outcome = Outcome::safe;
     std::uint8_t broken = 0;        ///< broken_left | broken_right
     std::uint8_t pivot_uplift = 0;  ///< 1 if the pivot's vertical reaction went negative (model invalid)
+    /// 1: a rerun perturbed in its input changed the outcome or damage state. Never set by the
+    /// integrator: the suite's --check-sensitivity sets it (records/suite_sweep.hpp).
+    std::uint8_t sensitive = 0;
 };
 
 /// True if every field holds the same bits (NaN included): what "identical results" means.
@@ -38,7 +41,8 @@ inline bool bitwise_equal(const CellResult& a, const CellResult& b) {
     return bits(a.max_rotation) == bits(b.max_rotation) && bits(a.t_overturn_s) == bits(b.t_overturn_s) &&
            bits(a.peak_force_ratio) == bits(b.peak_force_ratio) && a.impacts == b.impacts &&
            a.impacts_total == b.impacts_total && a.steps == b.steps && a.outcome == b.outcome && a.broken == b.broken &&
-           bits(a.mu_required) == bits(b.mu_required) && a.pivot_uplift == b.pivot_uplift;
+           bits(a.mu_required) == bits(b.mu_required) && a.pivot_uplift == b.pivot_uplift &&
+           a.sensitive == b.sensitive;
 }
 
 }  // namespace rocksweep

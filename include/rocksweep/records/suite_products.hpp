@@ -31,6 +31,9 @@ struct SuiteFragility {
     std::vector<DamageState> states;
     std::vector<std::int32_t> exceed, total;  ///< [state, alpha, radius, level]: runs reaching it, converged runs
     std::vector<FragilityFit> fits;           ///< [state, alpha, radius]
+    /// [state, alpha, radius]: the converged runs of each fit flagged sensitive (all 0 without
+    /// --check-sensitivity)
+    std::vector<std::int32_t> sensitive;
 };
 
 /// Of scenario `s` of a complete sweep.

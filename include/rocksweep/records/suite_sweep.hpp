@@ -10,6 +10,7 @@
 
 #include "rocksweep/grid/sweep.hpp"
 #include "rocksweep/motion/floor_filter.hpp"
+#include "rocksweep/physics/integrator.hpp"
 #include "rocksweep/records/intensity.hpp"
 #include "rocksweep/records/record_suite.hpp"
 
@@ -77,6 +78,22 @@ struct SuiteMotions {
     std::shared_ptr<const MotionSource> made;
 };
 
+/// --check-sensitivity: each run is run again with its record's scale times (1 + scale_step)
+/// and a tighter integration (the tolerance / tolerance_divisor; without a tolerance, the steps
+/// per period times tolerance_divisor^(1/4), RK4's order); a run whose outcome or damage
+/// state (the count of `damage_ratios`, theta_max / alpha, it reaches) differs is flagged
+/// (CellResult::sensitive). docs/suite.md, "Sensitive runs".
+struct SensitivityCheck {
+    bool on = false;
+    std::vector<double> damage_ratios;  ///< the suite's rotation damage states, increasing
+    static constexpr double scale_step = 1e-9;
+    static constexpr double tolerance_divisor = 100.0;
+    /// The rerun's settings: `s` made tighter as above.
+    static IntegratorSettings tighter(IntegratorSettings s);
+    /// True where the two runs of one cell differ in outcome or damage state.
+    bool differ(const CellResult& a, const CellResult& b) const;
+};
+
 struct SuiteSpec {
     Block block{};  ///< as configured; the size axis scales it
     Equations equations = Equations::nonlinear;
@@ -94,6 +111,7 @@ struct SuiteSpec {
     std::vector<motion::Floor> floors;       ///< at least one ({ground} by default)
     std::vector<std::size_t> scenario_floor;  ///< the floor (index into floors) of each scenario
     motion::Oscillator sa{1.0, 0.05};        ///< the oscillator of the sa_g measure
+    SensitivityCheck sensitivity;            ///< off by default
 
     std::size_t cells_per_scenario() const { return records.size() * alphas_rad.size() * radii_m.size() * intensity.points; }
     std::size_t cell_count() const { return cells_per_scenario() * scenarios.size(); }
@@ -133,7 +151,8 @@ SuiteSpec make_suite_spec(const std::string& suite_path, const Block& block, std
 Record on_floor(const Record& ground, const motion::Floor& floor);
 
 /// Computes cells [first, first + count) of `spec` into `out`; a made motion is made once for
-/// the consecutive cells that share it.
+/// the consecutive cells that share it. With spec.sensitivity.on each cell is run twice and
+/// its `sensitive` flag set from the pair; the first run's results are kept.
 void compute_suite_cells(const SuiteSpec& spec, const IntegratorSettings& settings, std::size_t first,
                          std::size_t count, CellResult* out, int lanes = 8);
 
