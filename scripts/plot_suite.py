@@ -287,6 +287,9 @@ def plot_ida(S, names, j, out):
             colour, ls = record_style(i)
             ax.plot(x, levels, color=colour, ls=ls, lw=1.3)
             ax.plot(np.where(fell[i], np.nan, x), levels, ".", color=colour, ms=5)   # the runs that stood
+            if "sensitive" in sc:   # --check-sensitivity: a perturbed rerun changed outcome or state
+                flagged = done[i] & (sc["sensitive"][i, j] == 1)
+                ax.plot(np.where(flagged, x, np.nan), levels, "x", color="k", ms=8, mew=1.6, zorder=6)
         ax.axvspan(*STRIP, color="0.85", zorder=0)
         ax.text(sum(STRIP) / 2, 0.02, "overturned", rotation=90, transform=ax.get_xaxis_transform(),
                 ha="center", va="bottom", fontsize=8, color="0.25")
@@ -295,9 +298,11 @@ def plot_ida(S, names, j, out):
         ax.set_xlabel(r"max rotation $\theta_{max}/\alpha$ [–]")
         ax.set_title(title)
         n_bad = int(np.count_nonzero(done & (out_ == 255)))
-        if n_bad:
-            ax.text(0.02, 0.98, "{} run(s) not converged: left out".format(n_bad), transform=ax.transAxes,
-                    va="top", fontsize=8)
+        notes = ["{} run(s) not converged: left out".format(n_bad)] if n_bad else []
+        if "sensitive" in sc:
+            notes.append("x: {} sensitive run(s)".format(int(np.count_nonzero(done & (sc["sensitive"][:, j] == 1)))))
+        if notes:
+            ax.text(0.02, 0.98, "\n".join(notes), transform=ax.transAxes, va="top", fontsize=8)
     axes[0].set_ylabel(intensity_label(S))
     axes[0].set_ylim(0, levels[-1] * 1.03)
     legend_ax.legend(handles=record_legend(recs), loc="center left", fontsize=8, frameon=False)

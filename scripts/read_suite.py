@@ -13,13 +13,17 @@ As a module:
     S["records"]["metadata"][name]    # {"event": ..., "station": ..., "file": ..., ...}
     sc = S["scenarios"]["free"]       # scenarios in config order
     sc["outcome"][i, a, j, k]         # record i, alpha_rad[a], radius_m[j], intensity[k]
+    sc.get("sensitive")               # with --check-sensitivity (S["attrs"]["check_sensitivity"]
+                                      #   == "on"): 1 where a perturbed rerun changed the outcome or
+                                      #   damage state, else 0; None without (docs/suite.md)
     sc["overturning"]                 # None unless the sweep is complete, else
                                       #   {"first_intensity", "first_pga_g", "below_intensity",
                                       #    "safe_above": [record, alpha, radius]}
     sc["fragility"]                   # None unless complete, else {"states": names,
                                       #   "rotation_ratios", "fraction"[state, alpha, radius, level],
                                       #   ..., "median_intensity", "beta", ... [state, alpha, radius],
-                                      #   "fit_status" (codes), "fit_status_names" (str)}
+                                      #   "fit_status" (codes), "fit_status_names" (str),
+                                      #   "sensitive_runs" [state, alpha, radius] with the check}
 
     read_suite.to_xarray(path)        # {scenario: xarray.Dataset}, record names as a coordinate
     read_suite.fragility_curve(x, median, beta)   # Phi(ln(x / median) / beta)
@@ -46,12 +50,13 @@ import read_spectra  # noqa: E402
 
 OUTCOMES = {0: "safe", 1: "overturned_with_impact", 2: "overturned_without_impact", 255: "not_converged"}
 RESULTS = ("outcome", "max_rotation", "impacts", "impacts_total", "t_overturn", "peak_force_ratio", "broken",
-           "mu_required", "pivot_uplift", "done")
+           "mu_required", "pivot_uplift", "done", "sensitive")
 PER_RECORD = ("pga_g", "pga_time_s", "pgv_m_s", "pgv_time_s", "residual_velocity_m_s", "arias_m_s",
               "significant_duration_s", "duration_s", "pga_vertical_g")
 OVERTURNING = ("first_intensity", "first_pga_g", "below_intensity", "safe_above")
 FRAGILITY = ("fraction", "fraction_lo", "fraction_hi", "exceed", "total", "median_intensity", "beta", "median_intensity_lo",
-             "median_intensity_hi", "beta_lo", "beta_hi", "se_ln_median", "se_beta", "fit_status")
+             "median_intensity_hi", "beta_lo", "beta_hi", "se_ln_median", "se_beta", "fit_status",
+             "sensitive_runs")
 FIT_STATUS = ("ok", "none_reached", "all_reached", "zero_dispersion", "not_identifiable", "decreasing")
 
 
@@ -248,7 +253,7 @@ def to_xarray(path):
         if fr:
             ds = ds.assign_coords(damage_state=("damage_state", np.array(fr["states"], dtype=object)),
                                   rotation_ratio=("damage_state", fr["rotation_ratios"]))
-            for k in FRAGILITY:
+            for k in (k for k in FRAGILITY if k in fr):
                 dims = ("damage_state", "alpha_rad", "radius_m", "intensity")[:fr[k].ndim]
                 ds[k] = (dims, fr[k], _unit(fr["units"], k))
         ds.attrs.update({k: v for k, v in S["attrs"].items() if np.ndim(v) == 0})
@@ -293,6 +298,8 @@ def summary(S):
         counts = ", ".join("{} {}".format(int(np.count_nonzero(done & (sc["outcome"] == c))), w)
                            for c, w in OUTCOMES.items())
         lines.append("{}: {} pending, {}".format(name, int(np.count_nonzero(~done)), counts))
+        if "sensitive" in sc:
+            lines.append("  {} run(s) flagged sensitive".format(int(np.count_nonzero(done & (sc["sensitive"] == 1)))))
         fr = sc["fragility"]
         if fr is None:
             lines.append("  no overturning/fragility groups (the sweep is not complete)")
@@ -300,9 +307,10 @@ def summary(S):
         s = len(fr["states"]) - 1
         for a, alpha in enumerate(S["alpha_rad"]):
             for j, r in enumerate(S["radius_m"]):
-                lines.append("  alpha = {:g} rad, R = {:g} m, {}: median {:.4g} [{}], beta {:.3g} ({})".format(
+                flagged = ", {} flagged run(s)".format(fr["sensitive_runs"][s, a, j]) if "sensitive_runs" in fr else ""
+                lines.append("  alpha = {:g} rad, R = {:g} m, {}: median {:.4g} [{}], beta {:.3g} ({}{})".format(
                     alpha, r, fr["states"][s], fr["median_intensity"][s, a, j], iu, fr["beta"][s, a, j],
-                    fr["fit_status_names"][s, a, j]))
+                    fr["fit_status_names"][s, a, j], flagged))
     return "\n".join(lines)
 
 
