@@ -15,7 +15,8 @@ function S = read_suite(file, scenario)
 %                          arrays (record, alpha, radius, level) of the file's types (uint8,
 %                          int32, double): S.outcome(i, a, j, k) is record i at S.alpha_rad(a),
 %                          S.radius_m(j) and level S.intensity(k), the element
-%                          [i-1, a-1, j-1, k-1] of h5py and numpy
+%                          [i-1, a-1, j-1, k-1] of h5py and numpy; S.sensitive too (uint8, 1:
+%                          flagged) in a file of suite --check-sensitivity (docs/suite.md)
 %     S.records            per-record measures (pga_g, pgv_m_s, ..., [record]) and
 %                          scale_factor, pga_scaled_g [record, alpha, level]; S.records.metadata(i) the
 %                          attributes of record i (name, event, station, file, ...)
@@ -26,7 +27,8 @@ function S = read_suite(file, scenario)
 %                          .rotation_ratios, fraction, fraction_lo, fraction_hi, exceed, total
 %                          [state, alpha, radius, level], median, beta, ..., fit_status
 %                          [state, alpha, radius]
-%                          and .fit_status_names (cell array of the fit_status meanings)
+%                          and .fit_status_names (cell array of the fit_status meanings);
+%                          .sensitive_runs [state, alpha, radius] with --check-sensitivity
 %
 %   Outcome codes: 0 safe, 1 overturned with impact, 2 without impact, 255 not converged.
 %   ncread lists dimensions in reverse (column-major) order; every array is permuted back here

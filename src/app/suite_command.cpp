@@ -74,7 +74,7 @@ CLI::App* add_suite_command(CLI::App& app, SuiteCommand& cmd) {
         ->check(number_in(0, 1e3, "", true))->capture_default_str();
     s->add_flag("--check-sensitivity", cmd.check_sensitivity,
                 "Run each run again with the record's scale times (1 + 1e-9) at the tolerance / 100 and flag those whose "
-                "outcome or damage state changes (about 2-3x the cost; docs/suite.md)");
+                "outcome or damage state changes (about 2.5x the cost; docs/suite.md)");
     return s;
 }
 
