@@ -2,7 +2,7 @@
 # risk_floors.sh RS REPO DIR: the risk of a suite on two floors (scenarios SCENARIO@FLOOR): its
 # groups come in the suite's order with their floor named, the ground's rates are bitwise those
 # of the same suite run on the ground alone (the hazard curve is the ground's whatever the floor),
-# and the floor's rates differ from them.
+# and the floor's rates differ from them; read_risk.py and read_risk.m read them in that order.
 set -eu
 rs="$1"; repo="$2"; dir="$3"
 mkdir -p "$dir"
@@ -38,6 +38,11 @@ for name, sc in R["scenarios"].items():
 print("ok: {} scenarios in the suite's order, floors named, ground rates bitwise those of the ground-only suite"
       .format(len(R["scenarios"])))
 PY
+# read_risk.m: the same order, and each scenario's floor.
+out=$(octave-cli --no-gui --quiet --norc --eval "addpath('$repo/scripts'); R = read_risk('$dir/risk_floors.h5', 'free@f4');
+  printf('%s|%s|%s\n', strjoin(R.scenario_names, ' '), R.scenario, R.floor);" 2>/dev/null | grep '|')
+echo "octave: $out"
+[ "$out" = "free@ground constant_tf1@ground free@f4 constant_tf1@f4|free@f4|f4" ]
 # The printed table names every scenario, however long, in the suite's order.
 grep -n "@f4" "$dir/risk_floors.txt" >/dev/null
 [ "$(grep -c '^[a-z_0-9.]*@ground ' "$dir/risk_floors.txt")" = 2 ]
