@@ -27,8 +27,10 @@ def nearest(values, want):
     return 0 if want is None else int(np.argmin(np.abs(np.asarray(values) - want)))
 
 
-def main(argv=None):
-    p = rsplot.parser("Hazard, fragility and deaggregation per anchorage scenario", "a risk file (.h5)", n_inputs=1)
+def open_risk(description, argv, program):
+    """The common command line of the risk figures: (args, R, (state, alpha, radius) indices),
+    or an exit status after one line on stderr."""
+    p = rsplot.parser(description, "a risk file (.h5)", n_inputs=1)
     p.add_argument("--state", default="overturning", help="damage state, by name (default overturning)")
     p.add_argument("--alpha", type=float, help="slenderness alpha [rad] (default the first in the file)")
     p.add_argument("--radius", type=float, help="block size R [m] (default the first in the file)")
@@ -36,12 +38,19 @@ def main(argv=None):
     try:
         R = read_risk.load(args.inputs[0])
     except read_risk.RiskFileError as e:
-        print(f"plot_risk.py: {e}", file=sys.stderr)
+        print(f"{program}: {e}", file=sys.stderr)
         return 1
     if args.state not in R["states"]:
-        print(f"plot_risk.py: --state {args.state}: the file has {', '.join(R['states'])}", file=sys.stderr)
+        print(f"{program}: --state {args.state}: the file has {', '.join(R['states'])}", file=sys.stderr)
         return 2
-    s, a, j = R["states"].index(args.state), nearest(R["alpha_rad"], args.alpha), nearest(R["radius_m"], args.radius)
+    return args, R, (R["states"].index(args.state), nearest(R["alpha_rad"], args.alpha), nearest(R["radius_m"], args.radius))
+
+
+def main(argv=None):
+    opened = open_risk("Hazard, fragility and deaggregation per anchorage scenario", argv, "plot_risk.py")
+    if isinstance(opened, int):
+        return opened
+    args, R, (s, a, j) = opened
     attrs, x, lv = R["attrs"], R["intensity"], R["level"]
     units = attrs["hazard_units"]
     hx, hr = R["hazard"]["intensity"], R["hazard"]["rate"]

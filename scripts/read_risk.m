@@ -1,9 +1,10 @@
 function R = read_risk(file, scenario)
 %READ_RISK  Read one anchorage scenario of a rocksweep risk file (rocksweep risk; docs/risk.md).
 %
-%   R = READ_RISK(FILE) reads the first scenario (in name order), R = READ_RISK(FILE, NAME) the
+%   R = READ_RISK(FILE) reads the first scenario (in the suite's order), R = READ_RISK(FILE, NAME) the
 %   scenario NAME ('free', 'constant_tf1', ...). R holds
-%     R.file, R.scenario, R.scenario_names
+%     R.file, R.scenario, R.scenario_names (in the suite's order), R.floor (the suite's floor
+%                          the scenario's blocks stood on: 'ground', 'f2', ...)
 %     R.attrs              root attributes read by name: hazard_measure, hazard_units,
 %                          hazard_file, hazard_format, suite_file, intensity_measure,
 %                          exposure_years, investigation_time_years, hazard_tail_rule
@@ -36,13 +37,26 @@ function R = read_risk(file, scenario)
         R.attrs.(name{1}) = ncreadatt(file, '/', name{1});
     end
     info = ncinfo(file, '/risk');
-    R.scenario_names = sort({info.Groups.Name});
+    % The suite's order (its index attribute: free, constant, adaptive; ground, then upstairs).
+    order = zeros(1, numel(info.Groups));
+    for k = 1:numel(info.Groups)
+        for a = info.Groups(k).Attributes
+            if strcmp(a.Name, 'index'), order(k) = double(a.Value); end
+        end
+    end
+    [~, perm] = sort(order);
+    R.scenario_names = {info.Groups(perm).Name};
     if nargin < 2
         scenario = R.scenario_names{1};
     elseif ~any(strcmp(R.scenario_names, scenario))
         error('read_risk:scenario', '%s: no scenario %s (the file has %s)', file, scenario, strjoin(R.scenario_names, ', '));
     end
     R.scenario = scenario;
+    try
+        R.floor = ncreadatt(file, ['/risk/' scenario], 'floor');
+    catch
+        R.floor = 'ground';  % a risk file written before floors were named in it
+    end
     R.hazard_intensity = ncread(file, '/hazard/intensity');
     R.hazard_rate = ncread(file, '/hazard/rate');
     g = ['/risk/' scenario];

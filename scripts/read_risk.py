@@ -10,7 +10,8 @@ As a module:
     R["hazard_rate"](x)               # H(x): log-log between points, end slopes beyond (as rocksweep)
     R["states"], R["alpha_rad"], R["radius_m"], R["intensity"], R["level"]   # axes; intensity: the
                                       # deaggregation's, level: the suite's intensity levels
-    sc = R["scenarios"]["free"]
+    sc = R["scenarios"]["free"]       # in the suite's order; a suite on several floors names
+                                      #   them SCENARIO@FLOOR, sc["floor"] the floor ("ground", ...)
     sc["rate_fit"][s, a, j]           # state s, alpha_rad[a], radius_m[j]: lambda [1/yr], and
                                       # rate_fit_lo/hi, probability_fit, return_period_fit,
                                       # share_below_fit, share_above_fit; the same *_empirical
@@ -79,7 +80,9 @@ def load(path):
         hz = {"intensity": f["hazard/intensity"][()], "rate": f["hazard/rate"][()]}
         R = {"attrs": attrs, "hazard": hz, "scenarios": {}}
         R["hazard_rate"] = lambda x: hazard_rate(x, hz["intensity"], hz["rate"])
-        for name, g in f["risk"].items():
+        # The suite's order (free, constant, adaptive; ground, then upstairs), not HDF5's by name.
+        groups = sorted(f["risk"].items(), key=lambda kv: int(kv[1].attrs.get("index", 0)))
+        for name, g in groups:
             if "states" not in R:
                 R["states"] = _text(g["damage_state"].attrs["flag_meanings"]).split(" ")
                 for axis in ("alpha_rad", "radius_m", "intensity"):
@@ -88,6 +91,7 @@ def load(path):
                 R["level"] = g["level"][()]
             sc = {k: g[k][()] for k in _per_block_names() + ["deaggregation_fit", "deaggregation_empirical",
                                                                "median_intensity", "beta", "fraction"]}
+            sc["floor"] = _text(g.attrs["floor"]) if "floor" in g.attrs else "ground"
             sc["fit_status"] = g["fit_status"][()]
             sc["fit_status_names"] = np.vectorize(lambda c: FIT_STATUS[c])(sc["fit_status"]) if sc["fit_status"].size else sc["fit_status"]
             R["scenarios"][name] = sc

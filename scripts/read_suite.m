@@ -20,6 +20,13 @@ function S = read_suite(file, scenario)
 %     S.records            per-record measures (pga_g, pgv_m_s, ..., [record]) and
 %                          scale_factor, pga_scaled_g [record, alpha, level]; S.records.metadata(i) the
 %                          attributes of record i (name, event, station, file, ...)
+%     S.records.sa_g       Sa(T, zeta) of each record as read [g], S.records.sa_period_s and
+%                          S.records.sa_damping its T [s] and zeta (absent in files before them)
+%     S.floors             one element per floor (docs/suite.md, "Floors"; empty before floors):
+%                          .name, .floor (its definition), .pfa_g, .pfa_over_pga [record],
+%                          .spectrum_g [record, period], .median_spectrum_g, .period_s [period],
+%                          .scale_factor [record, alpha, level], .median_pfa_g,
+%                          .median_pfa_over_pga; S.scenario_attrs.floor names the scenario's
 %     S.units              the units attribute of each result array that has one
 %     S.overturning        [] unless the sweep is complete, else a struct of first_intensity,
 %                          first_pga_g, below_intensity, safe_above [record, alpha, radius]
@@ -83,6 +90,11 @@ function S = read_suite(file, scenario)
         end
     end
     S.records.metadata = meta;
+    if isfield(S.records, 'sa_g')
+        S.records.sa_period_s = ncreadatt(file, '/records/sa_g', 'period_s');
+        S.records.sa_damping = ncreadatt(file, '/records/sa_g', 'damping');
+    end
+    S.floors = read_floors(file);
 
     path = ['/suite/' scenario];
     g = ncinfo(file, path);
@@ -107,6 +119,33 @@ function S = read_suite(file, scenario)
         meanings = strsplit(ncreadatt(file, [path '/fragility/fit_status'], 'flag_meanings'), ' ');
         fr.fit_status_names = reshape(meanings(double(fr.fit_status) + 1), size(fr.fit_status));
         S.fragility = fr;
+    end
+end
+
+function F = read_floors(file)
+% Each /floors/<floor> group: its arrays and attributes, one struct element per floor.
+    F = struct('name', {});
+    try
+        info = ncinfo(file, '/floors');
+    catch
+        return  % a file written before floors
+    end
+    for k = 1:numel(info.Groups)
+        name = info.Groups(k).Name;
+        path = ['/floors/' name];
+        fl = read_variables(file, path, struct('name', name));
+        for a = {'floor', 'median_pfa_g', 'median_pfa_over_pga'}
+            fl.(a{1}) = ncreadatt(file, path, a{1});
+        end
+        F = add_element(F, fl);
+    end
+end
+
+function A = add_element(A, s)
+% s appended to the struct array A (a field new to A is added to every element).
+    n = numel(A) + 1;
+    for f = fieldnames(s)'
+        A(n).(f{1}) = s.(f{1});
     end
 end
 

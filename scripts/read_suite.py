@@ -11,6 +11,14 @@ As a module:
     S["records"]["names"]             # record names in suite order (index = the record axis)
     S["records"]["pga_g"][i]          # per-record measures; ["scale_factor"][i, a, k] per alpha, level
     S["records"]["metadata"][name]    # {"event": ..., "station": ..., "file": ..., ...}
+    S["records"]["sa_g"][i]           # Sa(T, zeta) of record i as read [g]; S["records"]["sa"] =
+                                      #   {"period_s": T, "damping": zeta} (None in files before it)
+    fl = S["floors"]["f2"]            # floors by name ({} in files before them):
+                                      #   "pfa_g", "pfa_over_pga" [record], "spectrum_g"
+                                      #   [record, period], "median_spectrum_g", "period_s"
+                                      #   [period], "scale_factor" [record, alpha, level],
+                                      #   "median_pfa_g", "median_pfa_over_pga", "floor" (its
+                                      #   definition); sc["attrs"]["floor"] names a scenario's
     sc = S["scenarios"]["free"]       # scenarios in config order
     sc["outcome"][i, a, j, k]         # record i, alpha_rad[a], radius_m[j], intensity[k]
     sc.get("sensitive")               # with --check-sensitivity (S["attrs"]["check_sensitivity"]
@@ -116,6 +124,25 @@ def _records(f):
     out["names"] = names
     out["intensity"] = rec["intensity"][()]
     out["metadata"] = {n: attributes(rec[n]) if n in rec else {} for n in names}
+    out["sa"] = None
+    if "sa_g" in rec:  # format 4 on: the Sa measure of every record, whatever the levels follow
+        out["sa_g"] = rec["sa_g"][()]
+        out["sa"] = {k: float(value(rec["sa_g"].attrs[k])) for k in ("period_s", "damping")}
+    return out
+
+
+FLOOR = ("pfa_g", "pfa_over_pga", "spectrum_g", "median_spectrum_g", "period_s", "scale_factor")
+
+
+def _floors(f):
+    """{floor name: its products} (docs/suite.md, "Floors"), in the file's order; {} before floors."""
+    out = {}
+    for name, g in f["floors"].items() if "floors" in f else ():
+        fl = _group(g, FLOOR)
+        for a in ("median_pfa_g", "median_pfa_over_pga"):
+            fl[a] = float(value(g.attrs[a]))
+        fl["floor"] = value(g.attrs["floor"])
+        out[name] = fl
     return out
 
 
@@ -173,6 +200,7 @@ def load(path, scenarios=None):
         out = {"attrs": attributes(f)}
         out["provenance"] = attributes(f["provenance"]) if "provenance" in f else {}
         out["records"] = _records(f)
+        out["floors"] = _floors(f)
         out["intensity"] = out["records"]["intensity"]
         out["radius_m"] = groups[0][1]["radius_m"][()]
         out["intensity_measure"] = out["attrs"].get("intensity_measure", "")

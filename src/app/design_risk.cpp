@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "rocksweep/core/errors.hpp"
 #include "rocksweep/risk/hazard_file.hpp"
 #include "rocksweep/risk/risk_integral.hpp"
 #include "rocksweep/risk/suite_risk.hpp"
@@ -13,7 +14,11 @@ DesignRisk read_design_hazard(const std::string& path, int site, double exposure
     HazardFile file = read_hazard_file("hazard", path, site);
     SuiteFragilityTable measure;
     measure.measure = to_string(spec.measure);
-    if (spec.measure == IntensityMeasure::sa_g) measure.period_s = spec.sa.period_s;
+    if (spec.measure == IntensityMeasure::sa_g) measure.period_s = spec.sa.period_s, measure.damping = spec.sa.damping;
+    if (spec.measure == IntensityMeasure::sa_g && file.curve.measure() == HazardMeasure::sa &&
+        std::abs(spec.sa.damping - hazard_sa_damping) > 1e-9)
+        throw InputError("sa-damping", format_short(spec.sa.damping),
+                         "0.05 with an SA(T) hazard curve (--hazard " + path + "): such curves are 5 %-damped");
     check_same_measure(file.curve, path, measure);
     return DesignRisk{std::move(file.curve), path, exposure_years};
 }

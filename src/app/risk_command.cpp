@@ -2,6 +2,7 @@
 // same measure, integrate, write, and say where the rate came from.
 #include "rocksweep/app/risk_command.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -36,14 +37,16 @@ void print_summary(const RiskReport& r, std::ostream& out) {
         << " below, " << hz.curve.slope_above() << " above)\n";
     const std::size_t state = t.states.size() - 1, per_state = t.alphas.size() * t.radii.size();
     out << t.states[state] << ", " << format_short(r.exposure_years) << " years:\n";
-    out << "scenario              alpha [rad]  R [m]   rate_fit [1/yr] (95 %)               P_fit      rate_emp   P_emp      beyond\n";
+    std::size_t width = 22;  // "scenario@floor" names of a suite on several floors run longer
+    for (const ScenarioRisk& k : r.risk.scenarios) width = std::max(width, k.name.size() + 2);
+    out << std::left << std::setw(static_cast<int>(width)) << "scenario" << std::right << "alpha [rad]  R [m]   rate_fit [1/yr] (95 %)               P_fit      rate_emp   P_emp      beyond\n";
     for (std::size_t s = 0; s < r.risk.scenarios.size(); ++s) {
         const ScenarioRisk& k = r.risk.scenarios[s];
         for (std::size_t a = 0; a < t.alphas.size(); ++a)
             for (std::size_t j = 0; j < t.radii.size(); ++j) {
                 const std::size_t b = state * per_state + a * t.radii.size() + j;
                 const double beyond = (k.below_fit[b] + k.above_fit[b]) / k.rate_fit[b];
-                out << std::left << std::setw(22) << k.name << std::right << std::setprecision(4) << std::setw(11) << t.alphas[a]
+                out << std::left << std::setw(static_cast<int>(width)) << k.name << std::right << std::setprecision(4) << std::setw(11) << t.alphas[a]
                     << std::setw(7) << t.radii[j] << std::scientific << std::setprecision(2) << std::setw(11) << k.rate_fit[b] << " ("
                     << k.rate_fit_lo[b] << " .. " << k.rate_fit_hi[b] << ")" << std::setw(11)
                     << probability_in(k.rate_fit[b], r.exposure_years) << std::setw(11) << k.rate_empirical[b] << std::setw(11)

@@ -1,6 +1,7 @@
 // The risk file, and the suite file's fragility read back for it.
 #include "rocksweep/io/risk_file.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <sstream>
@@ -29,8 +30,18 @@ SuiteFragilityTable read_table(const h5::File& f, const std::string& path) {
     t.measure = h5::read_string_attribute(f, "intensity_measure");
     // A spectral measure records its period beside it (docs/risk.md).
     if (f.has_attribute("intensity_period_s")) t.period_s = h5::read_double_attribute(f, "intensity_period_s");
+    // ... and its damping beside each record's Sa (files before Sa have neither).
+    if (t.measure == "sa_g") t.damping = h5::read_double_attribute(f.open_group("records").open_dataset("sa_g"), "damping");
     const h5::Group suite = f.open_group("suite");
+    // HDF5 lists groups by name; the suite's order (its index attribute) is the one its
+    // readers and figures show (free, constant, adaptive; on the ground, then upstairs).
+    std::vector<std::pair<std::int64_t, std::string>> order;
     for (const std::string& name : suite.children()) {
+        const h5::Group g = suite.open_group(name);
+        order.emplace_back(g.has_attribute("index") ? h5::read_int64_attribute(g, "index") : 0, name);
+    }
+    std::stable_sort(order.begin(), order.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (const auto& [index, name] : order) {
         const h5::Group g = suite.open_group(name);
         if (!g.exists("fragility"))
             throw InputError("suite-file", path, "a complete suite file; its sweep is partial (no fragility in " + g.name() + ")");
@@ -43,6 +54,8 @@ SuiteFragilityTable read_table(const h5::File& f, const std::string& path) {
         }
         ScenarioFragility s;
         s.name = name;
+        s.index = index;
+        if (g.has_attribute("floor")) s.floor = h5::read_string_attribute(g, "floor");
         const auto read = [&](const char* n) { return h5::read_array<double>(fr, n).values; };
         s.fraction = read("fraction"), s.fraction_lo = read("fraction_lo"), s.fraction_hi = read("fraction_hi");
         // Suite files of format 3 on name the fitted median median_intensity (xarray's
@@ -84,6 +97,8 @@ void write_hazard(const h5::File& f, const RiskReport& r) {
 void write_scenario(const h5::Group& parent, const RiskReport& r, const ScenarioFragility& fr, const ScenarioRisk& s) {
     const SuiteFragilityTable& t = r.fragility;
     const h5::Group g = parent.create_group(s.name);
+    h5::write_attribute(g, "index", fr.index);
+    h5::write_attribute(g, "floor", fr.floor);
     const char* units = hazard_measure_units(r.hazard.curve.measure());
     const GridAxis axes[] = {state_axis(t),
                              {"alpha_rad", "rad", "slenderness angle alpha = atan(b/h) of the block", t.alphas},

@@ -37,6 +37,10 @@ void check_same_measure(const HazardCurve& h, const std::string& hazard_path, co
     if (h.measure() == HazardMeasure::pgv) same = t.measure == "pgv_m_s";
     if (h.measure() == HazardMeasure::sa)
         same = t.measure == "sa_g" && std::abs(t.period_s - h.period_s()) <= 1e-6 * h.period_s();
+    if (same && h.measure() == HazardMeasure::sa && std::abs(t.damping - hazard_sa_damping) > 1e-9)
+        throw InputError("hazard", hazard_path + " (" + name + ")",
+                         "a hazard curve of the suite's Sa: SA(T) curves are 5 %-damped, the suite's Sa is zeta = " +
+                             format_short(t.damping) + " (run the suite with --sa-damping 0.05)");
     if (!same) {
         const std::string suite = t.measure + (t.period_s > 0 ? " at T = " + format_short(t.period_s) + " s" : "");
         throw InputError("hazard", hazard_path + " (" + name + ")",

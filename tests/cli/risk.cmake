@@ -60,3 +60,36 @@ add_test(NAME cli.risk.model_option_refused
          COMMAND ${EXPECT} 2 "--mass = 3 is invalid: an option of the commands that run a model; risk reads the suite file"
                  ${RISK_DIR}/bad.h5 -- ${RS} --mass 3 risk --suite-file ${RISK_SUITE} --hazard ${RISK_DIR}/pgv.csv -o ${RISK_DIR}/bad.h5)
 set_tests_properties(cli.risk.model_option_refused PROPERTIES FIXTURES_REQUIRED risk_suite)
+
+# A suite on several floors (scenarios SCENARIO@FLOOR): the risk of each, in the suite's order
+# (tests/cli/risk_floors.sh).
+add_test(NAME cli.risk.floors
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/risk_floors.sh ${RS} ${PROJECT_SOURCE_DIR} ${RISK_DIR}/floors)
+set_tests_properties(cli.risk.floors PROPERTIES TIMEOUT 180 PROCESSORS 2)
+
+# Hazard curves of SA(T) are 5 %-damped: a suite's Sa of another damping is refused, by risk
+# (the suite file's) and by design (its --sa-damping), before anything is written.
+file(WRITE ${RISK_DIR}/sa.csv "SA(0.5) [g],annual_rate [1/yr]\n0.1,1e-2\n1.0,1e-4\n")
+add_test(NAME cli.risk.make_sa_suite
+         COMMAND ${RS} suite --config ${PROJECT_SOURCE_DIR}/configs/suite_smatteo.toml
+                 --suite ${PROJECT_SOURCE_DIR}/configs/records_suite.csv --intensity-measure sa --sa-period 0.5
+                 --sa-damping 0.02 --intensity-range 0.1 1.5 --intensity-points 3 --anchorages free
+                 --radius-range 1.392695228684288 1.392695228684288 --radius-points 1 --quiet --overwrite
+                 -o ${RISK_DIR}/suite_sa2.h5)
+set_tests_properties(cli.risk.make_sa_suite PROPERTIES FIXTURES_SETUP risk_sa_suite TIMEOUT 120)
+add_test(NAME cli.risk.sa_damping_refused
+         COMMAND ${EXPECT} 2 "--hazard = .*sa.csv \\(SA\\(0.5\\)\\) is invalid: a hazard curve of the suite's Sa: SA\\(T\\) curves are 5 %-damped, the suite's Sa is zeta = 0.02"
+                 ${RISK_DIR}/bad.h5 -- ${RS} risk --suite-file ${RISK_DIR}/suite_sa2.h5 --hazard ${RISK_DIR}/sa.csv -o ${RISK_DIR}/bad.h5)
+set_tests_properties(cli.risk.sa_damping_refused PROPERTIES FIXTURES_REQUIRED risk_sa_suite)
+add_test(NAME cli.risk.design_sa_damping_refused
+         COMMAND ${EXPECT} 2 "--sa-damping = 0.02 is invalid: 0.05 with an SA\\(T\\) hazard curve .*sa.csv\\): such curves are 5 %-damped"
+                 ${RISK_DIR}/bad_design.h5 -- ${RS} design --config ${PROJECT_SOURCE_DIR}/configs/design.toml
+                 --suite ${PROJECT_SOURCE_DIR}/configs/records_suite.csv --intensity-measure sa --sa-period 0.5
+                 --sa-damping 0.02 --hazard ${RISK_DIR}/sa.csv -o ${RISK_DIR}/bad_design.h5)
+# Its figure: the rate per anchorage and floor (scripts/plot_risk_floors.py), legible PNG and PDF.
+set_tests_properties(cli.risk.floors PROPERTIES FIXTURES_SETUP risk_floors_file)
+add_test(NAME cli.risk.floors_figure
+         COMMAND /usr/bin/python3 ${PROJECT_SOURCE_DIR}/tests/scripts/check_figure.py --expect ${RISK_DIR}/floors_figure
+                 -- /usr/bin/python3 ${PROJECT_SOURCE_DIR}/scripts/plot_risk_floors.py ${RISK_DIR}/floors/risk_floors.h5
+                 -o ${RISK_DIR}/floors_figure)
+set_tests_properties(cli.risk.floors_figure PROPERTIES FIXTURES_REQUIRED risk_floors_file TIMEOUT 120)

@@ -35,6 +35,11 @@ RADII_M = np.array([0.5, 1.0, 2.0])
 ALPHA = math.atan(0.25 / 1.0)                     # b = 0.25 m, h = 1.0 m: the configured block
 CAPACITY_G = [0.21, 0.42, 0.30, 0.55, 0.26, 0.37, 0.48, 0.19, 0.33, 0.62, 0.28]
 PGA_G = [0.348, 0.843, 0.702, 1.497, 0.358, 0.472, 1.226, 0.820, 0.690, 0.770, 0.168]
+# Sa(0.5 s, 5 %) of each record: 2.2 PGA (the mock's); floors: the ground (PFA = PGA) and a 2nd
+# floor whose PFA is FLOOR_GAIN[i] PGA, spectra on SPECTRUM_PERIODS_S.
+SA_PERIOD_S, SA_DAMPING = 0.5, 0.05
+FLOOR_GAIN = [1.2, 1.5, 1.9, 1.4, 2.6, 1.7, 2.0, 1.1, 1.8, 2.3, 1.6]
+SPECTRUM_PERIODS_S = np.array([0.1, 0.5, 2.0])
 PGV_M_S = [0.36, 1.29, 1.19, 1.27, 0.47, 0.94, 1.16, 0.77, 0.80, 0.63, 0.61]
 RECORDS = [  # name, file, format, units, event, station, component
     ("elcentro_1940_ns", "../tests/data/elcentro_1940_NS.dat", "time_accel", "g", "Imperial Valley 1940",
@@ -269,6 +274,9 @@ def write(path, n_radii, partial, measure):
         on_alpha(rec, "scale_factor", scale, ["record", "intensity"], "<f8", "1", "factor the record is multiplied by")
         on_alpha(rec, "pga_scaled_g", scale * pga[:, None], ["record", "intensity"], "<f8", "1",
                "peak ground acceleration of the scaled record / standard gravity")
+        sa = result(rec, "sa_g", 2.2 * pga, ["record"], "<f8", "1", "spectral pseudo-acceleration / standard gravity")
+        attrs(sa, {"period_s": SA_PERIOD_S, "damping": SA_DAMPING})
+        write_floors(f, names, pga, scale)
         for name, file_, fmt, u, event, station, component in RECORDS:
             g = rec.create_group(name)
             attrs(g, {"file": file_, "format": fmt, "units": u, "dt_s": "", "column": "", "scale": "1",
@@ -290,6 +298,28 @@ def write(path, n_radii, partial, measure):
         prov = f.create_group("provenance")
         attrs(prov, {"version": "mock", "config": "# written by tests/scripts/make_suite_mock.py\n",
                      "created_utc": "2026-11-24T00:00:00Z", "ranks": 1, "wall_s": 0.0})
+
+
+def write_floors(f, names, pga, scale):
+    """/floors/ground and /floors/f2 (docs/suite.md, "Floors"): spectrum = PFA (T / 0.5 s)."""
+    floors = f.create_group("floors")
+    attrs(floors, {"spectrum_damping": 0.05})
+    for name, gain, definition in (("ground", np.ones(len(names)), "ground"),
+                                   ("f2", np.array(FLOOR_GAIN), "f2: 0.5 0.05 1.3")):
+        g = floors.create_group(name)
+        record_axis(g, names)
+        alpha_axis(g)
+        axis(g, "intensity", LEVELS_G, "1", "target peak ground acceleration / standard gravity")
+        axis(g, "period_s", SPECTRUM_PERIODS_S, "s", "natural period of the 5 %-damped oscillator")
+        pfa = gain * pga
+        spectrum = pfa[:, None] * SPECTRUM_PERIODS_S[None, :] / 0.5
+        result(g, "pfa_g", pfa, ["record"], "<f8", "1", "peak floor acceleration / standard gravity")
+        result(g, "pfa_over_pga", gain, ["record"], "<f8", "1", "peak floor acceleration / PGA")
+        result(g, "spectrum_g", spectrum, ["record", "period_s"], "<f8", "1", "floor spectrum / standard gravity")
+        result(g, "median_spectrum_g", np.median(spectrum, axis=0), ["period_s"], "<f8", "1", "its median")
+        on_alpha(g, "scale_factor", scale, ["record", "intensity"], "<f8", "1", "factor on this floor")
+        attrs(g, {"floor": definition, "median_pfa_g": float(np.median(pfa)),
+                  "median_pfa_over_pga": float(np.median(gain))})
 
 
 def write_scenario(g, names, radii, levels, units, long_name, factor, index, partial):

@@ -5,6 +5,8 @@
   the safe island, the fit statuses) and fragility arrays consistent with the outcome arrays
   they summarise (exceed and total recounted from outcome and max_rotation, fraction =
   exceed / total inside its Wilson interval, the fitted curve 0.5 at its median);
+- read_suite.py and read_suite.m read the records' Sa and each floor's products (PFA, PFA/PGA,
+  spectra and medians) as the mock wrote them;
 - read_suite.m (run by octave-cli) returns the same arrays as h5py, in the same index order
   and of the same types, for every scenario;
 - xarray opens each scenario group with both engines (h5netcdf, netcdf4) with the same values,
@@ -96,6 +98,28 @@ def test_values(path):
           "overturning medians rise with anchorage (free < constant < adaptive) and with R")
 
 
+def test_floors_and_sa(path):
+    S = read_suite.load(path)
+    rec = S["records"]
+    check(np.allclose(rec["sa_g"], 2.2 * np.array(mock.PGA_G), rtol=1e-15, atol=0)
+          and rec["sa"] == {"period_s": mock.SA_PERIOD_S, "damping": mock.SA_DAMPING},
+          "records' Sa(T, zeta) with its T and zeta")
+    check(sorted(S["floors"]) == ["f2", "ground"], "one entry per /floors group")
+    ground, f2 = S["floors"]["ground"], S["floors"]["f2"]
+    gain = np.array(mock.FLOOR_GAIN)
+    check(np.array_equal(ground["pfa_g"], rec["pga_g"]) and np.all(ground["pfa_over_pga"] == 1.0),
+          "ground floor: PFA = PGA")
+    check(np.allclose(f2["pfa_g"], gain * rec["pga_g"], rtol=1e-15, atol=0) and np.array_equal(f2["pfa_over_pga"], gain)
+          and f2["floor"] == "f2: 0.5 0.05 1.3", "f2: PFA, PFA/PGA and its definition")
+    check(math.isclose(f2["median_pfa_over_pga"], float(np.median(gain)), rel_tol=1e-15)
+          and math.isclose(f2["median_pfa_g"], float(np.median(gain * rec["pga_g"])), rel_tol=1e-15),
+          "f2: the medians over the records")
+    check(f2["spectrum_g"].shape == (len(mock.RECORDS), 3) and np.array_equal(f2["period_s"], mock.SPECTRUM_PERIODS_S)
+          and np.allclose(f2["median_spectrum_g"], np.median(f2["spectrum_g"], axis=0), rtol=1e-15, atol=0)
+          and f2["units"]["spectrum_g"] == "1", "f2: floor spectra [record, period], their median and units")
+    check(f2["scale_factor"].shape == (len(mock.RECORDS), 1, len(mock.LEVELS_G)), "f2: scale factors [record, alpha, level]")
+
+
 def test_partial(path):
     S = read_suite.load(path)
     check(all(sc["overturning"] is None and sc["fragility"] is None for sc in S["scenarios"].values()),
@@ -121,6 +145,16 @@ for k = 1:numel(names)
     end
     X.([p 'fr_states']) = strjoin(S.fragility.states', ' ');
     X.([p 'anchorage']) = S.scenario_attrs.anchorage;
+end
+X.sa_g = S.records.sa_g;
+X.sa_period_s = S.records.sa_period_s;
+X.sa_damping = S.records.sa_damping;
+X.floor_names = strjoin({{S.floors.name}}, ' ');
+for k = 1:numel(S.floors)
+    for f = {{'pfa_g', 'pfa_over_pga', 'spectrum_g', 'median_spectrum_g', 'period_s', 'scale_factor', 'median_pfa_g', 'median_pfa_over_pga'}}
+        X.(['fl_' S.floors(k).name '_' f{{1}}]) = S.floors(k).(f{{1}});
+    end
+    X.(['fl_' S.floors(k).name '_floor']) = S.floors(k).floor;
 end
 X.record_names = strjoin(S.record_names', ' ');
 X.scale_factor = S.records.scale_factor;
@@ -155,6 +189,23 @@ def test_octave(path):
               "Octave: root attributes (read by name where Octave's ncinfo cannot list the file)")
         check(same(M["scale_factor"], f["records/scale_factor"][()]) and same(M["pga_g"].ravel(), f["records/pga_g"][()]),
               "Octave: per-record arrays")
+        check(same(M["sa_g"].ravel(), f["records/sa_g"][()]) and float(M["sa_period_s"][0, 0]) == mock.SA_PERIOD_S
+              and float(M["sa_damping"][0, 0]) == mock.SA_DAMPING, "Octave: Sa of each record, its T and zeta")
+        floors = sorted(f["floors"])
+        check(sorted(text("floor_names").split()) == floors, "Octave: one element per floor")
+        bad = []
+        for fl in floors:
+            g = f["floors"][fl]
+            for ds in ("pfa_g", "pfa_over_pga", "spectrum_g", "median_spectrum_g", "period_s", "scale_factor"):
+                m = M["fl_{}_{}".format(fl, ds)]
+                if not same(m.ravel() if g[ds].ndim == 1 else m, g[ds][()]):
+                    bad.append(fl + "/" + ds)
+            for a in ("median_pfa_g", "median_pfa_over_pga"):
+                if float(M["fl_{}_{}".format(fl, a)][0, 0]) != float(g.attrs[a]):
+                    bad.append(fl + "." + a)
+            if text("fl_{}_floor".format(fl)) != read_suite.value(g.attrs["floor"]):
+                bad.append(fl + ".floor")
+        check(not bad, "Octave = h5py for the floors' products{}".format(": differs in " + ", ".join(bad) if bad else ""))
         for k, name in enumerate(names, start=1):
             g = f["suite"][name]
             p = "s{}_".format(k)
@@ -235,6 +286,7 @@ def main(argv):
     mock_dir = argv[1]
     path = os.path.join(mock_dir, "suite.h5")
     test_values(path)
+    test_floors_and_sa(path)
     test_partial(os.path.join(mock_dir, "suite_partial.h5"))
     test_octave(path)
     test_xarray(path)

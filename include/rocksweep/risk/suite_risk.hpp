@@ -14,6 +14,8 @@ namespace rocksweep {
 /// One scenario's fragility, in the suite file's C order.
 struct ScenarioFragility {
     std::string name;
+    std::int64_t index = 0;     ///< the suite's order of its scenarios
+    std::string floor = "ground";  ///< the suite's /floors group the blocks stood on
     std::vector<double> fraction, fraction_lo, fraction_hi;  ///< [state, alpha, radius, level]
     std::vector<double> median, beta, median_lo, median_hi, beta_lo, beta_hi;  ///< [state, alpha, radius]
     std::vector<std::uint8_t> fit_status;                     ///< FitStatus codes, [state, alpha, radius]
@@ -22,6 +24,7 @@ struct ScenarioFragility {
 struct SuiteFragilityTable {
     std::string measure;  ///< the suite's intensity_measure: "pga_g", "pgv_m_s", ...
     double period_s = 0;  ///< of a spectral measure; 0 otherwise
+    double damping = 0.05;  ///< of a spectral measure: hazard curves of SA(T) are 5 %-damped
     std::vector<std::string> states;
     std::vector<double> alphas, radii, levels;
     std::vector<ScenarioFragility> scenarios;
@@ -30,8 +33,12 @@ struct SuiteFragilityTable {
 
 /// Throws InputError("hazard", ...) unless the hazard curve's measure is the suite's: PGA for
 /// pga_g, PGV for pgv_m_s, SA(T) for a spectral suite measure "sa_g" of the same period (to
-/// 1e-6 relative). A suite scaled by pga_ratio or scale has no hazard curve.
+/// 1e-6 relative) and 5 % damping, the damping hazard curves of SA(T) are computed for. A suite
+/// scaled by pga_ratio or scale has no hazard curve.
 void check_same_measure(const HazardCurve& h, const std::string& hazard_path, const SuiteFragilityTable& t);
+
+/// The damping of the SA(T) a hazard curve gives (ground-motion models and OpenQuake's SA).
+inline constexpr double hazard_sa_damping = 0.05;
 
 struct ScenarioRisk {
     std::string name;
