@@ -64,13 +64,18 @@ const std::vector<Setting> kSettings = {
     {"events96_cross", Method::events, 96, 1e-3, true, false},
     {"events384", Method::events, 384, 1e-4, true, true},
     // Error-controlled steps (issue 22): the sweep's default and simulate's.
+    // Looser tolerances, for the work-precision records panel (benchmarks/records_panel.sh).
+    {"tol1e-6", Method::events, 48, 1e-3, true, true, 1e-6},
+    {"tol1e-7", Method::events, 48, 1e-3, true, true, 1e-7},
     {"tol1e-8", Method::events, 48, 1e-3, true, true, 1e-8},
     {"tol1e-9", Method::events, 384, 1e-4, true, true, 1e-9},
     {"tol1e-10", Method::events, 384, 1e-4, true, true, 1e-10},
     {"paper", Method::paper, 0, 1e-3, true},
     // The paper's method at finer steps: first order, its error halves with dt (issue 22's
     // work-precision comparison at equal error).
+    {"paper_dt1.3e-3", Method::paper, 0, 1e-3, true, true, 0.0, 0.0025 / 2},
     {"paper_dt6.3e-4", Method::paper, 0, 1e-3, true, true, 0.0, 0.0025 / 4},
+    {"paper_dt3.1e-4", Method::paper, 0, 1e-3, true, true, 0.0, 0.0025 / 8},
     {"paper_dt1.6e-4", Method::paper, 0, 1e-3, true, true, 0.0, 0.0025 / 16},
 };
 
@@ -247,8 +252,9 @@ int main(int argc, char** argv) {
     app.add_option("--min-seconds", min_seconds, "time: wall seconds per setting, at least")->check(CLI::Range(0.0, 600.0))->capture_default_str();
     app.add_option("--lanes", lanes, "time: lanes of integrate_cells")->check(CLI::IsMember({1, 4, 8, 16}))->capture_default_str();
     app.add_option("--only", only, "time: this setting alone (for a profiler)")
-        ->check(CLI::IsMember({"events48", "events48_cross", "events96_cross", "events384", "tol1e-8", "tol1e-9", "tol1e-10",
-                               "paper", "paper_dt6.3e-4", "paper_dt1.6e-4"}));
+        ->check(CLI::IsMember({"events48", "events48_cross", "events96_cross", "events384", "tol1e-6", "tol1e-7", "tol1e-8",
+                               "tol1e-9", "tol1e-10", "paper", "paper_dt1.3e-3", "paper_dt6.3e-4", "paper_dt3.1e-4",
+                               "paper_dt1.6e-4"}));
     CLI11_PARSE(app, argc, argv);
     try {
         return run(mode, suite, out, lanes, min_seconds, only);

@@ -4,7 +4,7 @@
 // times every cell a fragility study computes (8640), most of them short or barely rocking,
 // on records sampled at 50-200 Hz.
 //   suite_peers --setting events48|events48_cross|paper [--lanes W] [--levels N] [--radii N]
-//               [--records-csv FILE] [--cells FILE]
+//               [--records-csv FILE] [--cells FILE] [--tolerance TOL] [--paper-dt S]
 // Prints one line: setting, lanes, cells, seconds of the cell computation (records are read
 // before the clock starts), cells/s and the RK4 steps of all cells (trial steps of event
 // searches included). --cells FILE writes one line per cell: index, record, outcome code,
@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
     std::size_t levels = 30, radii = 8;
     int lanes = 8;
     double tolerance = Options{}.numerics.tolerance;
+    double paper_dt_s = IntegratorSettings{}.paper_dt_s;  // the paper's 0.0025 s unless given
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string k = argv[i], v = argv[i + 1];
         if (k == "--setting") setting = v;
@@ -35,10 +36,14 @@ int main(int argc, char** argv) {
         else if (k == "--lanes") lanes = std::stoi(v);
         else if (k == "--cells") cells_path = v;
         else if (k == "--tolerance") tolerance = std::stod(v);
+        else if (k == "--paper-dt") paper_dt_s = std::stod(v);
         else { std::fprintf(stderr, "suite_peers: unknown option %s\n", k.c_str()); return 2; }
     }
     IntegratorSettings is;  // the sweep's defaults: events, 48 steps per period, samples end steps
-    if (setting == "paper") is.method = Method::paper;
+    if (setting == "paper") {
+        is.method = Method::paper;
+        is.paper_dt_s = paper_dt_s;
+    }
     else if (setting == "events48_cross") is.steps_end_at_samples = false;
     else if (setting == "tolerance") is.tolerance = tolerance;  // the sweep's default since issue 22 unless given
     else if (setting != "events48") {
