@@ -125,7 +125,7 @@ bad_input(range_with_three_values "--omega-ratio-range is invalid: 3 values give
           sweep --config ${CFG} -o ${OUT} --omega-ratio-range 1 2 3)
 
 # Memory: estimated and refused before anything is allocated.
-bad_input(grid_beyond_memory "--omega-ratio-points = 100000 is invalid: .* 7e10 cells would need about 3.08 TB, more than half of this machine's"
+bad_input(grid_beyond_memory "--omega-ratio-points = 100000 is invalid: .* 7e10 cells would need about 3.15 TB, more than half of this machine's"
           sweep --config ${CFG} -o ${OUT} --omega-ratio-points 100000 --amplitude-ratio-points 100000)
 bad_input(history_beyond_memory "--output-dt = 1e-5 is invalid: with --t-end 1000000 s, a history of 1e11 samples would need about [0-9.]+ TB"
           simulate -o ${OUT} --t-end 1e6 --output-dt 1e-5)
