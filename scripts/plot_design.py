@@ -76,10 +76,10 @@ def draw_curve(ax, x, curve, a, colour, unit):
                label="within {:g} of the best{}".format(a.get("near_optimal", 0), " exp(-rate t)" if risk else ""))
     i = int(curve["attrs"]["optimum_index"])
     ax.plot(x[i], y[i], "*", color=rsplot.OKABE_ITO["vermillion"], ms=16, mec="k", mew=0.6, zorder=4,
-            label="best: {} → {}".format(unit(x[i]), "{:.3g}/yr".format(y[i]) if risk else "{:.3f}".format(y[i])))
+            label="best: {} → {}".format(unit(x[i]), "{:.2e}/yr".format(y[i]) if risk else "{:.3f}".format(y[i])))
     free = a[free_key]
     ax.axhline(free, color="k", ls="--", lw=1.0,
-               label="free-standing: {}".format("{:.3g}/yr".format(free) if risk else "{:.3f}".format(free)))
+               label="free-standing: {}".format("{:.2e}/yr".format(free) if risk else "{:.3f}".format(free)))
     ax.set_xscale("log")
     if risk:
         ax.set_yscale("log")
@@ -133,7 +133,7 @@ def plot(D, out):
     ax_r.set_title("adaptive, $K_{{max}}$ = {:.3g} kN/m ($\\theta_f$ = ${}$)".format(
         r["attrs"]["k_max_N_per_m"] / 1e3, rsplot.alpha_fraction(r["attrs"].get("k_max_theta_f_ratio", 1))))
     for ax in (ax_k, ax_r):
-        ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.13), fontsize=8, ncol=3)
+        ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.13), fontsize=8, ncol=2 if "annual_rate" in c else 3)
 
     limits = []
     if a.get("max_rotation_ratio", 0) > 0:

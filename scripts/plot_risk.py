@@ -17,6 +17,9 @@ import read_risk  # noqa: E402
 import rsplot  # noqa: E402
 from rsplot import plt  # noqa: E402
 
+# The lognormal fit and the empirical fractions, the same colours in every panel (Okabe-Ito).
+FIT, EMPIRICAL = rsplot.OKABE_ITO["blue"], rsplot.OKABE_ITO["vermillion"]
+
 
 def normal_cdf(z):
     """Phi(z), with the standard library's erfc (no scipy: setup.sh does not install it)."""
@@ -73,27 +76,27 @@ def main(argv=None):
         med, beta = sc["median_intensity"][s, a, j], sc["beta"][s, a, j]
         status = sc["fit_status_names"][s, a, j]
         if np.isfinite(med) and np.isfinite(beta) and beta > 0:
-            ax.semilogx(x, normal_cdf(np.log(x / med) / beta), "C0-", label=f"fit: median {med:.3g} {units}, beta {beta:.2f}")
+            ax.semilogx(x, normal_cdf(np.log(x / med) / beta), "-", color=FIT, label=f"fit: median {med:.3g} {units}, β {beta:.2f}")
         elif np.isfinite(med) and beta == 0:
-            ax.semilogx(x, (x >= med).astype(float), "C0--", label=f"fit: step at {med:.3g} {units}")
+            ax.semilogx(x, (x >= med).astype(float), "--", color=FIT, label=f"fit: step at {med:.3g} {units}")
         else:
-            ax.semilogx([], [], "C0-", label=f"no fit ({status})")
-        ax.semilogx(lv, sc["fraction"][s, a, j], "C1o", ms=4, label="empirical fractions")
+            ax.semilogx([], [], "-", color=FIT, label=f"no fit ({status})")
+        ax.semilogx(lv, sc["fraction"][s, a, j], "o", color=EMPIRICAL, ms=4, label="empirical fractions")
         ax.set_ylim(-0.03, 1.03)
         ax.set_ylabel(f"P({args.state} | x)" if c == 0 else "")
         ax.legend(loc="upper left", fontsize=7)
         ax = axes[2, c]
         lam_f, lam_e = sc["rate_fit"][s, a, j], sc["rate_empirical"][s, a, j]
-        ax.semilogx(x, sc["deaggregation_fit"][s, a, j], "C0-",
+        ax.semilogx(x, sc["deaggregation_fit"][s, a, j], "-", color=FIT,
                     label=f"fit {lam_f:.2e}/yr, P{t:g} {sc['probability_fit'][s, a, j]:.3f}")
-        ax.semilogx(x, sc["deaggregation_empirical"][s, a, j], "C1-",
+        ax.semilogx(x, sc["deaggregation_empirical"][s, a, j], "-", color=EMPIRICAL,
                     label=f"empirical {lam_e:.2e}/yr, P{t:g} {sc['probability_empirical'][s, a, j]:.3f}")
         for edge in (hx[0], hx[-1]):
             ax.axvline(edge, color="0.6", lw=0.8, ls=":")
         ax.set_xlabel(f"{attrs['hazard_measure']} x [{units}]")
-        ax.set_ylabel("d lambda / d ln x [1/yr]" if c == 0 else "")
+        ax.set_ylabel("dλ / d ln x [1/yr]" if c == 0 else "")
         ax.legend(loc="upper left", fontsize=7)
-    fig.suptitle(f"{args.state} at alpha = {R['alpha_rad'][a]:.4g} rad, R = {R['radius_m'][j]:.3g} m, "
+    fig.suptitle(f"{args.state} at α = {R['alpha_rad'][a]:.4g} rad, R = {R['radius_m'][j]:.3g} m, "
                  f"hazard {os.path.basename(attrs['hazard_file'])}\n"
                  f"bottom: hazard x fragility, the deaggregation (area = annual rate); dotted: the curve's first and last points")
     rsplot.save(fig, args.output)
