@@ -51,7 +51,7 @@ def main():
                  ylabel="Sa(T, 5 %) of the floor motion [g]", title="floor response spectra")
         ax_s.legend(loc="lower left")
         ax_r.set_xticks(range(len(floors)), [n for n, _ in floors])
-        ax_r.set(ylabel="PFA / PGA", title="peak floor acceleration over the ground's (bar: median)",
+        ax_r.set(ylabel="PFA / PGA [–]", title="peak floor acceleration over the ground's (bar: median)",
                  xlim=(-0.6, len(floors) - 0.4))
         ax_r.axhline(1.0, color="0.5", lw=0.8, ls=":")
     for p in rsplot.save(fig, args.output):
