@@ -3,13 +3,19 @@
 // level: a `simulate` of the motion, cells computed as `suite` computes them) and (3) a suite's
 // share: `--levels` x `--radii` x 3 anchorages per motion, in chunks of 64 as the ranks take
 // them (each chunk makes its motions again). Prints one line per measure; times are CPU time.
+// With --startup N: what `suite --synthetic-count N` spends before its first cell, item by item
+// (the fit, making each motion, its measures, Sa, the floor's motion, the floor spectra), and
+// make_suite_spec itself on the writer and on a worker (docs/synthetic.md, "Cost and scale").
 //   synthetic_cost [--record FILE --units U] [--motions N] [--levels N] [--radii N]
+//   synthetic_cost [--record FILE --units U] --startup N [--floor TEXT]
 #include <ctime>
 #include <cstdio>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "rocksweep/motion/floor_filter.hpp"
+#include "rocksweep/motion/response_spectrum.hpp"
 #include "rocksweep/physics/anchorage.hpp"
 #include "rocksweep/physics/integrator.hpp"
 #include "rocksweep/records/suite_sweep.hpp"
@@ -50,11 +56,59 @@ double run_cells(const SuiteSpec& spec) {
     return cpu_now() - t0;
 }
 
+// The start-up of a suite of `count` motions of `gen`, item by item, per motion.
+void startup(const synthetic::Generator& gen, std::size_t count, const std::string& floor_text) {
+    std::vector<motion::Floor> floors{motion::Floor{}};
+    if (!floor_text.empty()) floors.push_back(motion::parse_floor("floor", floor_text));
+    const std::vector<double> periods = motion::floor_spectrum_periods();
+    double make = 0, measures = 0, sa = 0, on_floors = 0, spectra = 0, t0 = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+        t0 = cpu_now();
+        const Record r = gen.record(1, i);
+        make += cpu_now() - t0;
+        t0 = cpu_now();
+        volatile double pga = intensity_measures(r).pga_g;
+        (void)pga;
+        measures += cpu_now() - t0;
+        t0 = cpu_now();
+        volatile double s = motion::spectral_acceleration(r.ax_g, r.dt_s, motion::Oscillator{1.0, 0.05});
+        (void)s;
+        sa += cpu_now() - t0;
+        for (const motion::Floor& f : floors) {
+            t0 = cpu_now();
+            const Record on = on_floor(r, f);
+            on_floors += cpu_now() - t0;
+            t0 = cpu_now();
+            volatile double s0 = motion::response_spectrum(on.ax_g, on.dt_s, periods, 0.05)[0];
+            (void)s0;
+            spectra += cpu_now() - t0;
+        }
+    }
+    const double n = static_cast<double>(count);
+    std::printf("per motion (%zu motions, floors: ground%s): make %.3f ms, measures %.3f ms, Sa(1 s) %.3f ms, "
+                "on the floors %.3f ms, floor spectra (%zu x %zu periods) %.3f ms; total %.3f ms\n",
+                count, floor_text.empty() ? "" : (" and " + floors.back().name).c_str(), 1e3 * make / n, 1e3 * measures / n,
+                1e3 * sa / n, 1e3 * on_floors / n, floors.size(), periods.size(), 1e3 * spectra / n,
+                1e3 * (make + measures + sa + on_floors + spectra) / n);
+    for (const bool writer : {true, false}) {
+        SuiteMotions made;
+        made.floors = floors;
+        made.made = std::make_shared<synthetic::ModelMotions>(gen, 1, count);
+        if (!writer) made.measures = SuiteMotions::Measures::none;
+        const Block b = rectangular_block(0.30, 1.36, 3361.0);
+        t0 = cpu_now();
+        const SuiteSpec spec = make_suite_spec("", b, {{"free", free_anchorage(), 0.0, 1.0}}, IntensityMeasure::pga_g,
+                                               Axis{0.05, 1.5, 25}, {}, {}, std::move(made));
+        std::printf("make_suite_spec on %s: %.3f s\n", writer ? "the writer (every measure)" : "a worker", cpu_now() - t0);
+    }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     std::string path = "tests/data/loma_prieta_1989.dat", units = "m/s^2";
-    std::size_t motions = 200, levels = 25, radii = 4;
+    std::size_t motions = 200, levels = 25, radii = 4, startup_count = 0;
+    std::string floor_text;
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string k = argv[i], v = argv[i + 1];
         if (k == "--record") path = v;
@@ -62,6 +116,8 @@ int main(int argc, char** argv) {
         else if (k == "--motions") motions = std::stoul(v);
         else if (k == "--levels") levels = std::stoul(v);
         else if (k == "--radii") radii = std::stoul(v);
+        else if (k == "--startup") startup_count = std::stoul(v);
+        else if (k == "--floor") floor_text = v;
         else { std::fprintf(stderr, "synthetic_cost: unknown option %s\n", k.c_str()); return 2; }
     }
     RecordSource source;
@@ -72,6 +128,10 @@ int main(int argc, char** argv) {
     const synthetic::FitResult fit = synthetic::fit_model(r.ax_g, r.dt_s);
     std::printf("fit %s: %.3f s; %s\n", path.c_str(), cpu_now() - t0, synthetic::describe(fit.params).c_str());
     const synthetic::Generator gen(fit.params, r.dt_s, synthetic::default_duration_s(fit.params));
+    if (startup_count > 0) {
+        startup(gen, startup_count, floor_text);
+        return 0;
+    }
     t0 = cpu_now();
     std::vector<double> a;
     for (std::size_t i = 0; i < motions; ++i) gen.generate(1, i, a);

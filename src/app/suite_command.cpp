@@ -8,6 +8,7 @@
 #include <iomanip>
 #include <optional>
 
+#include "rocksweep/app/made_on_ranks.hpp"
 #include "rocksweep/app/memory_budget.hpp"
 #include "rocksweep/app/option_checks.hpp"
 #include "rocksweep/app/resume_check.hpp"
@@ -110,7 +111,7 @@ void check_suite_options(const CLI::App& app, const CLI::App& suite, const std::
     }
 }
 
-SuiteSpec make_suite_spec(const Options& opts, const SuiteCommand& cmd) {
+SuiteSpec make_suite_spec(const Options& opts, const SuiteCommand& cmd, SuiteMotions::Measures made_measures) {
     const SweepSpec base = make_sweep_spec(opts);
     const Axis levels = make_axis("intensity", cmd.intensity_range, cmd.intensity_points);
     std::vector<double> radii, alphas;
@@ -125,6 +126,7 @@ SuiteSpec make_suite_spec(const Options& opts, const SuiteCommand& cmd) {
                                  format_short(ratio, 4) + " reaches 0 (the block is too squat to rock)");
     }
     SuiteMotions motions;
+    motions.measures = made_measures;
     for (const std::string& text : cmd.floors) motions.floors.push_back(motion::parse_floor("floor", text));
     motions.sa = motion::Oscillator{cmd.sa_period_s, cmd.sa_damping};
     if (cmd.synthetic.count > 0) {
@@ -162,8 +164,10 @@ struct Plan {
     IntegratorSettings settings;
 };
 
-Plan make_plan(const Options& opts, const SuiteCommand& cmd) {
-    Plan p{make_suite_spec(opts, cmd), {}, make_settings(opts.numerics)};
+Plan make_plan(const Options& opts, const SuiteCommand& cmd, const MpiSession& mpi) {
+    // The made motions measured once over the ranks, not on each (made_on_ranks.hpp).
+    Plan p{make_suite_spec(opts, cmd, SuiteMotions::Measures::none), {}, make_settings(opts.numerics)};
+    measure_made_on_ranks(p.spec, mpi);
     for (double x : cmd.damage_states) p.states.push_back({x, false});
     p.states.push_back({0.0, true});
     p.spec.sensitivity.on = cmd.check_sensitivity;
@@ -237,7 +241,7 @@ void summarise(const Plan& plan, const SweepResults& r, std::ostream& log) {
 }  // namespace
 
 int run_suite(const Options& opts, const SuiteCommand& cmd, const std::string& config_text, const MpiSession& mpi) {
-    const Plan plan = make_plan(opts, cmd);  // the same on every rank, so is any error
+    const Plan plan = make_plan(opts, cmd, mpi);  // the same on every rank, so is any error
     const SuiteSpec& spec = plan.spec;
     IntegratorSettings settings = plan.settings;
     RootStream log(mpi);

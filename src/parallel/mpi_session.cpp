@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -58,6 +59,26 @@ void MpiSession::broadcast(std::vector<double>& values) const {
     MPI_Bcast(&n, 1, MPI_UNSIGNED_LONG_LONG, 0, comm());
     values.resize(n);
     if (n > 0) MPI_Bcast(values.data(), static_cast<int>(n), MPI_DOUBLE, 0, comm());
+}
+
+std::vector<double> MpiSession::gather(const std::vector<double>& values) const {
+    if (size_ == 1) return values;
+    const int n = static_cast<int>(values.size());
+    std::vector<int> counts(rank_ == 0 ? size_ : 0), offsets(counts.size());
+    MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm());
+    std::vector<double> all;
+    if (rank_ == 0) {
+        long long total = 0;
+        for (int r = 0; r < size_; ++r) {
+            offsets[r] = static_cast<int>(total);
+            total += counts[r];
+        }
+        // The others already wait in the gather: a local failure must end the job.
+        if (total > std::numeric_limits<int>::max()) abort_on_error(0, "MpiSession::gather: more than 2^31 values at once");
+        all.resize(static_cast<std::size_t>(total));
+    }
+    MPI_Gatherv(values.data(), n, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, 0, comm());
+    return all;
 }
 
 double MpiSession::wall_time() noexcept {

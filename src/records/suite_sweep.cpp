@@ -9,6 +9,7 @@
 #include "rocksweep/grid/block_family.hpp"
 #include "rocksweep/motion/response_spectrum.hpp"
 #include "rocksweep/physics/integrator.hpp"
+#include "rocksweep/records/made_measures.hpp"
 
 namespace rocksweep {
 
@@ -145,6 +146,22 @@ void require_measure(IntensityMeasure measure, const SuiteMember& m, const std::
 
 }  // namespace
 
+void measure_made_motions(SuiteSpec& spec, std::size_t first, std::size_t count) {
+    const std::size_t made = spec.records.size() - spec.motions->size();  // made motions follow the file's records
+    for (std::size_t i = first; i < first + count; ++i) {
+        SuiteMember& m = spec.records.at(made + i);
+        m.record = spec.motions->motion(i);
+        m.floors.clear();
+        measure_member(m, spec, false);
+        m.record.ax_g = {};
+    }
+}
+
+void check_made_measures(const SuiteSpec& spec) {
+    for (const SuiteMember& m : spec.records)
+        if (m.motion >= 0) require_measure(spec.measure, m, "synthetic motion " + std::to_string(m.motion));
+}
+
 SuiteSpec make_suite_spec(const std::string& suite_path, const Block& block, std::vector<Scenario> scenarios,
                           IntensityMeasure measure, Axis intensity, std::vector<double> radii_m,
                           std::vector<double> alphas_rad, SuiteMotions motions) {
@@ -167,23 +184,25 @@ SuiteSpec make_suite_spec(const std::string& suite_path, const Block& block, std
             spec.records.push_back(std::move(m));
         }
     }
-    // Made motions: measured now, on the ground and every floor, as a read record is; their
-    // samples dropped, the cells make them again (compute_suite_cells).
+    // Made motions: measured (now, or in shares: made_measures.hpp) on the ground and every
+    // floor, as a read record is; their samples dropped, the cells make them again
+    // (compute_suite_cells).
     const std::shared_ptr<const MotionSource>& made = motions.made;
     for (std::size_t i = 0; made && i < made->size(); ++i) {
         SuiteMember m;
         m.entry.name = made->name(i);
         m.entry.metadata.assign(spec.metadata_columns.size(), "");
-        m.record = made->motion(i);
-        measure_member(m, spec, false);
-        m.record.ax_g = {};
+        m.record = made->described(i);
         m.motion = static_cast<std::ptrdiff_t>(i);
-        require_measure(measure, m, "synthetic motion " + std::to_string(i));
         spec.records.push_back(std::move(m));
     }
     spec.motions = std::move(motions.made);
     if (spec.records.empty()) throw InputError("suite", suite_path, "a suite with at least one record");
     spec.measure = measure;
+    if (spec.motions && motions.measures == SuiteMotions::Measures::all) {
+        measure_made_motions(spec, 0, spec.motions->size());
+        check_made_measures(spec);
+    }
     spec.intensity = intensity;
     if (radii_m.empty()) radii_m.push_back(block.radius_m);
     if (alphas_rad.empty()) alphas_rad.push_back(block.alpha_rad);

@@ -133,13 +133,18 @@ void Generator::superpose(const std::vector<double>& weights, std::vector<double
     }
 }
 
-Record Generator::record(std::uint64_t seed, std::uint64_t index) const {
+Record Generator::described(std::uint64_t seed, std::uint64_t index) const {
     Record r;
     r.path = "synthetic:" + std::to_string(seed) + ":" + std::to_string(index);
     r.units = "g";
     r.dt_s = dt_s_;
+    r.npts = samples();
+    return r;
+}
+
+Record Generator::record(std::uint64_t seed, std::uint64_t index) const {
+    Record r = described(seed, index);
     generate(seed, index, r.ax_g);
-    r.npts = r.ax_g.size();
     return r;
 }
 

@@ -47,8 +47,10 @@ void check_suite_options(const CLI::App& app, const CLI::App& suite, const std::
                          const SuiteCommand& cmd);
 
 /// The cells of the suite that `opts` (block, scenarios, numerics) and `cmd` describe: reads
-/// the suite and its records. Throws InputError naming the option.
-SuiteSpec make_suite_spec(const Options& opts, const SuiteCommand& cmd);
+/// the suite and its records; measures the made motions unless `made_measures` is none
+/// (run_suite measures them over its ranks). Throws InputError naming the option.
+SuiteSpec make_suite_spec(const Options& opts, const SuiteCommand& cmd,
+                          SuiteMotions::Measures made_measures = SuiteMotions::Measures::all);
 
 /// Runs the suite on every rank of `mpi`; rank 0 writes `cmd.run.output`. Returns the exit status.
 int run_suite(const Options& opts, const SuiteCommand& cmd, const std::string& config_text, const MpiSession& mpi);

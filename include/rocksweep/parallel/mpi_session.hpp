@@ -44,6 +44,10 @@ public:
     void broadcast(int& value) const;
     /// Rank 0's `values` (its length too) on every rank.
     void broadcast(std::vector<double>& values) const;
+    /// Every rank's `values` (any lengths), one after the other in rank order, on rank 0;
+    /// empty elsewhere (collective; a job of one rank returns its own). At most 2^31 - 1 values
+    /// in all: more aborts the job.
+    std::vector<double> gather(const std::vector<double>& values) const;
     /// Seconds on a monotonic wall clock: differences between two calls on one rank are meaningful.
     static double wall_time() noexcept;
     /// Ends every rank of the job with exit status `code` (MPI_Abort on MPI_COMM_WORLD).

@@ -43,6 +43,13 @@ public:
     /// Unique, letters, digits and '_' (a group name of the output's /records).
     virtual std::string name(std::size_t i) const = 0;
     virtual Record motion(std::size_t i) const = 0;
+    /// Motion i as the suite keeps it: motion(i) without its horizontal samples. A source that
+    /// can say this without making the motion overrides it.
+    virtual Record described(std::size_t i) const {
+        Record r = motion(i);
+        r.ax_g = {};
+        return r;
+    }
     /// What makes them, on one line (stored in the output).
     virtual std::string describe() const = 0;
 };
@@ -76,6 +83,9 @@ struct SuiteMotions {
     std::vector<motion::Floor> floors;
     motion::Oscillator sa{1.0, 0.05};
     std::shared_ptr<const MotionSource> made;
+    /// all: each made motion is made and measured now. none: none is made; their members hold
+    /// no measures until records/made_measures.hpp fills them (a rank measures its share).
+    enum class Measures { all, none } measures = Measures::all;
 };
 
 /// --check-sensitivity: each run is run again with its record's scale times (1 + scale_step)

@@ -40,6 +40,8 @@ public:
 
     /// The same motion as a Record (horizontal only, path "synthetic:SEED:INDEX", units "g").
     Record record(std::uint64_t seed, std::uint64_t index) const;
+    /// record(seed, index) without its samples (ax_g empty), made without making the motion.
+    Record described(std::uint64_t seed, std::uint64_t index) const;
 
 private:
     /// out_k += sum over i < k of weights_i h_i(t_k - t_i) (or its square, for the variance).

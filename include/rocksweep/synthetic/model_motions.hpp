@@ -19,6 +19,7 @@ public:
     std::size_t size() const override { return count_; }
     std::string name(std::size_t i) const override { return motion_name(seed_, i); }
     Record motion(std::size_t i) const override { return generator_.record(seed_, i); }
+    Record described(std::size_t i) const override { return generator_.described(seed_, i); }
     std::string describe() const override;
 
 private:
