@@ -16,14 +16,19 @@ double filter_frequency_hz(const ModelParameters& p, double t_s, bool drift) {
     return std::max(p.f_mid_hz + p.f_slope_hz_s * (t_s - p.tmid_s), filter_frequency_floor_hz);
 }
 
+// `p` once it and the sampling are checked: before any member is made of them.
+const ModelParameters& checked(const ModelParameters& p, double dt_s, double duration_s) {
+    check(p);
+    require_closed("dt", dt_s, record_dt_min_s, 0.1, "a sampling interval in [1e-5, 0.1] s");
+    require_closed("duration", duration_s, p.tmid_s, 1e5,
+                   "a motion length in [t_mid, 1e5] s (t_mid = " + format_short(p.tmid_s, 4) + " s)");
+    return p;
+}
+
 }  // namespace
 
 Generator::Generator(const ModelParameters& params, double dt_s, double duration_s, Stages stages)
-    : params_(params), dt_s_(dt_s), stages_(stages), hp_omega_(2.0 * M_PI * params.fc_hz) {
-    check(params);
-    require_closed("dt", dt_s, record_dt_min_s, 0.1, "a sampling interval in [1e-5, 0.1] s");
-    require_closed("duration", duration_s, params.tmid_s, 1e5,
-                   "a motion length in [t_mid, 1e5] s (t_mid = " + format_short(params.tmid_s, 4) + " s)");
+    : params_(checked(params, dt_s, duration_s)), dt_s_(dt_s), stages_(stages), high_pass_(params.fc_hz, dt_s) {
     const Modulation q = modulation(params);
     const std::size_t n = static_cast<std::size_t>(std::floor(duration_s / dt_s + 0.5)) + 1;
     const double f_top = std::max(filter_frequency_hz(params, 0.0, stages.drift),
@@ -67,21 +72,7 @@ void Generator::generate(std::uint64_t seed, std::uint64_t index, std::vector<do
     for (double& w : impulses) w = noise.next();
     superpose<false>(impulses, ax_g);
     for (std::size_t k = 0; k < n; ++k) ax_g[k] *= envelope_[k];
-    if (!stages_.high_pass) return;
-    // High-pass: the relative acceleration of a critically damped oscillator under the motion,
-    // u'' + 2 w u' + w^2 u = x, by the linear-acceleration method, whose u and u' are exactly the
-    // double and single integrals of the piecewise-linear output: they are the motion's own
-    // displacement and velocity, and decay to rest once x has.
-    const double w = hp_omega_, dt = dt_s_;
-    const double denom = 1.0 + w * dt + w * w * dt * dt / 6.0;
-    double u = 0.0, v = 0.0, a = 0.0;  // x(0) = 0: at rest
-    for (std::size_t k = 1; k < n; ++k) {
-        const double a_new = (ax_g[k] - 2.0 * w * (v + 0.5 * dt * a) - w * w * (u + dt * v + dt * dt / 3.0 * a)) / denom;
-        u += dt * v + dt * dt / 6.0 * (2.0 * a + a_new);
-        v += 0.5 * dt * (a + a_new);
-        a = a_new;
-        ax_g[k] = a;
-    }
+    if (stages_.high_pass) high_pass_.apply(ax_g);
 }
 
 namespace {

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "rocksweep/motion/high_pass.hpp"
 #include "rocksweep/records/record.hpp"
 #include "rocksweep/synthetic/ground_model.hpp"
 
@@ -55,7 +56,7 @@ private:
     // Impulse i's response at lag j is Im(amplitude_i rotation_i^j), j = 1..length_i.
     std::vector<double> amplitude_, rotation_re_, rotation_im_;
     std::vector<std::uint32_t> length_;
-    double hp_omega_ = 0.0;  ///< high-pass corner, 2 pi f_c [rad/s]
+    motion::HighPass high_pass_;  ///< the critically damped oscillator of corner f_c
 };
 
 }  // namespace rocksweep::synthetic
