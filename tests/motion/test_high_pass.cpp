@@ -7,8 +7,10 @@
 #include <stdexcept>
 #include <vector>
 
+#include "read_linear.hpp"
 #include "rocksweep/motion/high_pass.hpp"
 
+using namespace rocksweep;
 using namespace rocksweep::motion;
 
 namespace {
@@ -22,18 +24,6 @@ std::vector<double> burst() {
     for (std::size_t k = 1; k <= 50; ++k)
         x[k] = std::sin(4.0 * M_PI * k * dt) + std::max(0.0, std::sin(2.0 * M_PI * k * dt));
     return x;
-}
-
-// The ending velocity and displacement of `a` read linear between samples, over their peaks.
-double residual(const std::vector<double>& a) {
-    double v = 0.0, d = 0.0, v_peak = 0.0, d_peak = 0.0;
-    for (std::size_t k = 1; k < a.size(); ++k) {
-        d += dt * v + dt * dt / 6.0 * (2.0 * a[k - 1] + a[k]);
-        v += 0.5 * dt * (a[k - 1] + a[k]);
-        v_peak = std::max(v_peak, std::abs(v));
-        d_peak = std::max(d_peak, std::abs(d));
-    }
-    return std::max(std::abs(v) / v_peak, std::abs(d) / d_peak);
 }
 
 }  // namespace
@@ -61,9 +51,9 @@ TEST(HighPass, IsTheLinearAccelerationMethod) {
 // oscillator's, which decay as (1 + w t) exp(-w t) over the 60 s of rest.
 TEST(HighPass, TheMotionReadLinearComesToRest) {
     std::vector<double> x = burst();
-    EXPECT_GT(residual(x), 0.5);
+    EXPECT_GT(rocksweep::testing::residual_over_peak(x, dt), 0.5);
     HighPass(fc, dt).apply(x);
-    EXPECT_LT(residual(x), 1e-9);
+    EXPECT_LT(rocksweep::testing::residual_over_peak(x, dt), 1e-9);
 }
 
 TEST(HighPass, RefusesACornerOrStepThatIsNotPositive) {

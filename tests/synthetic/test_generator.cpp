@@ -6,6 +6,7 @@
 #include <cmath>
 #include <vector>
 
+#include "../motion/read_linear.hpp"
 #include "rocksweep/synthetic/generator.hpp"
 #include "rocksweep/synthetic/motion_measures.hpp"
 
@@ -156,15 +157,7 @@ TEST(Generator, ResidualVelocityAndDisplacementVanish) {
         double worst = 0.0;
         for (int i = 0; i < 200; ++i) {
             gen.generate(5, i, a);
-            // Exact integrals of the piecewise-linear acceleration, from rest.
-            double v = 0.0, d = 0.0, v_peak = 0.0, d_peak = 0.0;
-            for (std::size_t k = 1; k < a.size(); ++k) {
-                d += dt * v + dt * dt / 6.0 * (2.0 * a[k - 1] + a[k]);
-                v += 0.5 * dt * (a[k - 1] + a[k]);
-                v_peak = std::max(v_peak, std::abs(v));
-                d_peak = std::max(d_peak, std::abs(d));
-            }
-            worst = std::max({worst, std::abs(v) / v_peak, std::abs(d) / d_peak});
+            worst = std::max(worst, rocksweep::testing::residual_over_peak(a, dt));
         }
         if (high_pass)
             EXPECT_LT(worst, 5e-3);
