@@ -64,8 +64,22 @@ add_test(NAME cli.suite_synthetic_kill_resume.mpirun=2
 add_test(NAME cli.suite_synthetic_floor_ranks_identical
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/suite_ranks.sh ${RS} ${CFG} - ${CMAKE_CURRENT_BINARY_DIR}/suite_syn_floor_ranks
                  --synthetic-count 6 ${FIT} --floor ground "f2: 0.5 0.05 1.3; 0.17 0.05 -0.4" --intensity-measure pfa)
+# The ranks measure the motions in shares, in rounds of 1024 motions a rank (app/made_on_ranks.hpp):
+# 2050 short motions on 2 ranks take two rounds, the second of one motion a rank; the file is the
+# one rank's, measures and floor spectra included (~9 s).
+add_test(NAME cli.suite_synthetic_measured_in_rounds.mpirun=2
+         COMMAND bash -c "set -e; d=$0; rs=$1; cfg=$2; shift 2; rm -rf $d; mkdir -p $d
+                          mpi=(mpirun --oversubscribe); [ $(id -u) -eq 0 ] && mpi+=(--allow-run-as-root)
+                          args=(suite --config $cfg --synthetic-count 2050 \"$@\" --anchorages free --intensity-points 1
+                                --intensity-range 0.3 0.3 --intensity-measure pfa -q)
+                          $rs \"\${args[@]}\" --floor ground 'f2: 0.5 0.05 1.3' -o $d/np1.h5
+                          \"\${mpi[@]}\" -np 2 $rs \"\${args[@]}\" --floor ground 'f2: 0.5 0.05 1.3' -o $d/np2.h5
+                          h5diff --exclude-path /provenance $d/np1.h5 $d/np2.h5"
+                 ${CMAKE_CURRENT_BINARY_DIR}/suite_syn_rounds ${RS} ${CFG}
+                 --arias 0.05 --d595 2 --tmid 1.5 --f-mid 4 --f-slope 0 --zeta 0.3 --fc 1 --dt 0.02)
 set_tests_properties(cli.suite_synthetic_ranks_identical cli.suite_synthetic_kill_resume.mpirun=2
-                     cli.suite_synthetic_floor_ranks_identical PROPERTIES TIMEOUT 300 PROCESSORS 2)
+                     cli.suite_synthetic_floor_ranks_identical cli.suite_synthetic_measured_in_rounds.mpirun=2
+                     PROPERTIES TIMEOUT 300 PROCESSORS 2)
 
 # Made on the ranks or written by synth and read back as a record suite: the same motions, so the
 # same results, bit for bit (the files' 17 digits read back to the generator's bits).
