@@ -7,6 +7,7 @@
 #          its record's metadata; the CSV's scale is fitted (I_a x scale^2); a resume with another
 #          N, seed or --synthetic-only is refused and leaves the file as it was.
 #   ranks: bitwise the same on 1, 2 and 3 ranks and any chunk (suite_ranks.sh).
+#   kill:  killed at three moments on 2 ranks and resumed: the same file (suite_kill_resume.sh).
 #   refused: a record whose PGA betrays a wrong unit (though only fitted) and one the model cannot
 #          take are refused naming their suite line, exit 2, no output.
 set -eu
@@ -23,6 +24,10 @@ fail() { echo "FAIL: $*"; exit 1; }
 
 if [ "$mode" = ranks ]; then
   exec bash "$(dirname "$0")/suite_ranks.sh" "$rs" "$cfg" "$site" "$dir/ranks" --synthetic-per-record 5 --seed 11
+fi
+if [ "$mode" = kill ]; then
+  LEVELS="${LEVELS:-48}" RADII="${RADII:-2}" exec bash "$(dirname "$0")/suite_kill_resume.sh" "$rs" "$cfg" "$site" "$dir/kill" 2 \
+    --synthetic-per-record 4 --synthetic-only --seed 11
 fi
 
 if [ "$mode" = refused ]; then

@@ -102,4 +102,7 @@ add_test(NAME cli.suite_per_record_equals_written_motions
          COMMAND ${PER_RECORD} equal ${RS} ${CFG} ${PROJECT_SOURCE_DIR}/tests/data ${CMAKE_CURRENT_BINARY_DIR}/per_record_equal)
 add_test(NAME cli.suite_per_record_ranks_identical
          COMMAND ${PER_RECORD} ranks ${RS} ${CFG} ${PROJECT_SOURCE_DIR}/tests/data ${CMAKE_CURRENT_BINARY_DIR}/per_record_ranks)
-set_tests_properties(cli.suite_per_record_ranks_identical PROPERTIES TIMEOUT 300 PROCESSORS 2)
+add_test(NAME cli.suite_per_record_kill_resume.mpirun=2
+         COMMAND ${PER_RECORD} kill ${RS} ${CFG} ${PROJECT_SOURCE_DIR}/tests/data ${CMAKE_CURRENT_BINARY_DIR}/per_record_kill)
+set_tests_properties(cli.suite_per_record_ranks_identical cli.suite_per_record_kill_resume.mpirun=2
+                     PROPERTIES TIMEOUT 300 PROCESSORS 2)
