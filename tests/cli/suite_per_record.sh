@@ -9,7 +9,8 @@
 #   ranks: bitwise the same on 1, 2 and 3 ranks and any chunk (suite_ranks.sh).
 #   kill:  killed at three moments on 2 ranks and resumed: the same file (suite_kill_resume.sh).
 #   refused: a record whose PGA betrays a wrong unit (though only fitted) and one the model cannot
-#          take are refused naming their suite line, exit 2, no output.
+#          take are refused naming their suite line, exit 2, no output; a record only fitted is
+#          still an input that no output may replace.
 set -eu
 mode="$1"; rs="$2"; cfg="$3"; data="$4"; dir="$5"
 rm -rf "$dir"; mkdir -p "$dir"
@@ -37,6 +38,14 @@ if [ "$mode" = refused ]; then
     "$data" "$data" > "$dir/cm.csv"
   "${expect[@]}" "^rocksweep: error: --suite = $dir/cm.csv line 3 is invalid: record el \(.*elcentro_1940_NS.dat\): its peak ground acceleration as read in cm/s\^2, .* pass --record-any-pga to accept every record of the suite$" \
     "$dir/bad.h5" -- "$rs" suite --config "$cfg" --suite "$dir/cm.csv" --synthetic-per-record 2 --synthetic-only -o "$dir/bad.h5"
+  # A record only fitted (--synthetic-only) is still an input: no output may replace it.
+  cp "$data/loma_prieta_1989.dat" "$dir/loma.dat"
+  printf 'name,file,format,units\nloma,loma.dat,time_accel,m/s^2\n' > "$dir/own.csv"
+  if err=$("$rs" suite --config "$cfg" --suite "$dir/own.csv" --synthetic-per-record 2 --synthetic-only --overwrite \
+             -o "$dir/loma.dat" 2>&1); then fail "a fitted record overwritten"; fi
+  echo "$err"
+  grep -q "^rocksweep: error: --output = $dir/loma.dat is invalid: a file that is not one of the run's inputs (it is record loma of the --suite file" <<<"$err" \
+    && cmp -s "$dir/loma.dat" "$data/loma_prieta_1989.dat" || fail "the fitted record as output: not refused, or changed"
   # 1.6 s of a 1 Hz sine: one up-crossing, the model's filter cannot be fitted.
   awk 'BEGIN { for (i = 0; i <= 160; ++i) printf "%.2f %.6f\n", i * 0.01, 0.3 * sin(6.283185307 * i * 0.01) }' > "$dir/sine.dat"
   printf 'name,file,format,units\nloma,%s/loma_prieta_1989.dat,time_accel,m/s^2\nsine,sine.dat,time_accel,g\n' "$data" > "$dir/bad.csv"
