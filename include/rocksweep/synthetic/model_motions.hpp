@@ -21,6 +21,9 @@ public:
     Record motion(std::size_t i) const override { return generator_.record(seed_, i); }
     std::string describe() const override;
 
+    const Generator& generator() const { return generator_; }
+    std::uint64_t seed() const { return seed_; }
+
 private:
     Generator generator_;
     std::uint64_t seed_;
