@@ -13,6 +13,7 @@
 #include "rocksweep/app/option_checks.hpp"
 #include "rocksweep/app/resume_check.hpp"
 #include "rocksweep/app/run_support.hpp"
+#include "rocksweep/app/suite_synthetic.hpp"
 #include "rocksweep/core/errors.hpp"
 #include "rocksweep/io/output_claim.hpp"
 #include "rocksweep/io/run_inputs.hpp"
@@ -20,7 +21,6 @@
 #include "rocksweep/motion/floor_filter.hpp"
 #include "rocksweep/parallel/progress.hpp"
 #include "rocksweep/parallel/scheduler.hpp"
-#include "rocksweep/synthetic/model_motions.hpp"
 
 #ifndef ROCKSWEEP_VERSION
 #define ROCKSWEEP_VERSION "unknown"
@@ -55,11 +55,7 @@ CLI::App* add_suite_command(CLI::App& app, SuiteCommand& cmd) {
     s->fallthrough();
     add_run_options(*s, cmd.run);
     add_suite_hazard_options(*s, cmd);
-    add_synthetic_options(*s, cmd.synthetic);
-    s->add_option("--synthetic-count", cmd.synthetic.count,
-                  "Motions of the stochastic model (--arias ... or --record to fit; docs/synthetic.md) beside or "
-                  "instead of --suite's records, made on the ranks, never stored")
-        ->check(integer_in(0, 100000000))->capture_default_str();
+    add_suite_synthetic_options(*s, cmd);
     s->add_option("--radius-range", cmd.radius_range,
                   "Block sizes R from LO to HI [m], at the block's density (default: the block's own R)")
         ->expected(2)->check(number_in(1e-3, 1e3, "m"));
@@ -84,15 +80,7 @@ void check_suite_options(const CLI::App& app, const CLI::App& suite, const std::
     refuse_typed(app, args,
                  pulse_region_options,
                  "an option of sweep; the suite's ground motions are its records");
-    if (cmd.suite.empty() && cmd.synthetic.count == 0)
-        throw InputError("suite", "(not given)", "a suite of records (CSV), or --synthetic-count N motions of a model, or both");
-    if (cmd.synthetic.count > 0)
-        check_synthetic_options(suite, cmd.synthetic);
-    else
-        refuse_typed(app, args,
-                     {"--arias", "--d595", "--tmid", "--f-mid", "--f-slope", "--zeta", "--fc", "--dt", "--motion-duration",
-                      "--seed", "--record", "--record-format", "--record-units", "--record-dt", "--record-column"},
-                     "an option of the synthetic motions, which need --synthetic-count N");
+    check_suite_synthetic_options(app, suite, args, cmd);
     if (cmd.run.refine_stride != 0)
         throw InputError("refine", std::to_string(cmd.run.refine_stride), "0 for suite (refinement is for spectra maps)");
     if (cmd.radius_range.empty() && cmd.radius_points != 1)
@@ -129,25 +117,25 @@ SuiteSpec make_suite_spec(const Options& opts, const SuiteCommand& cmd, SuiteMot
     motions.measures = made_measures;
     for (const std::string& text : cmd.floors) motions.floors.push_back(motion::parse_floor("floor", text));
     motions.sa = motion::Oscillator{cmd.sa_period_s, cmd.sa_damping};
-    if (cmd.synthetic.count > 0) {
-        const ResolvedSource r = resolve(cmd.synthetic, nullptr);
-        motions.made = std::make_shared<synthetic::ModelMotions>(synthetic::Generator(r.params, r.dt_s, r.duration_s),
-                                                                  cmd.synthetic.seed, cmd.synthetic.count);
-    }
-    SuiteSpec spec = make_suite_spec(cmd.suite, base.block, base.scenarios,
+    const MadeMotions made = make_suite_motions(cmd);
+    motions.made = made.source;
+    // With --synthetic-only the records only fit the model: the spec reads none.
+    SuiteSpec spec = make_suite_spec(cmd.synthetic_only ? std::string() : cmd.suite, base.block, base.scenarios,
                                      parse_intensity_measure("intensity-measure", cmd.measure), levels, radii, alphas,
                                      std::move(motions));
+    label_fitted_motions(spec, cmd, made);
+    // No output may replace a record of the suite (io/run_inputs.hpp), swept or only fitted.
+    const auto note_files = [&](const SuiteRecord& entry) {
+        const std::string where = cmd.suite + " line " + std::to_string(entry.line);
+        note_input("record " + entry.name + " of the --suite file (" + where + ")", entry.source.path);
+        if (entry.source.vertical) note_input("record " + entry.name + "'s vertical file (" + where + ")", entry.source.vertical->path);
+    };
+    if (cmd.synthetic_only)
+        for (const SuiteRecord& entry : made.suite.records) note_files(entry);
     for (const SuiteMember& m : spec.records) {
         if (m.motion >= 0) continue;  // made, not read: no file, its PGA is the model's
-        const std::string where = cmd.suite + " line " + std::to_string(m.entry.line);
-        // No output may replace a record of the suite (io/run_inputs.hpp).
-        note_input("record " + m.entry.name + " of the --suite file (" + where + ")", m.entry.source.path);
-        if (m.entry.source.vertical)
-            note_input("record " + m.entry.name + "'s vertical file (" + where + ")", m.entry.source.vertical->path);
-        if (!opts.numerics.record_any_pga && !plausible_pga(m.record))
-            throw InputError("suite", where,
-                             "record " + m.entry.name + " (" + m.record.path + "): " +
-                                 implausible_pga(m.record, "pass --record-any-pga to accept every record of the suite"));
+        note_files(m.entry);
+        check_suite_record_pga(cmd.suite, m.entry, m.record, opts.numerics.record_any_pga);
     }
     check_record_names(spec);  // before any work: a name the output cannot hold
     spec.equations = base.equations;

@@ -74,29 +74,35 @@ void check_synthetic_options(const CLI::App& sub, const SyntheticSource& s) {
                          "(not given)", "required without --record (missing: " + missing + ")");
 }
 
-ResolvedSource resolve(const SyntheticSource& s, std::ostream* log) {
+ResolvedSource fit_to_record(const Record& rec, const SyntheticSource& s, std::ostream* log) {
+    synthetic::FitSettings fs;
+    fs.fc_hz = s.params.fc_hz;
+    const synthetic::FitResult fit = synthetic::fit_model(rec.ax_g, rec.dt_s, fs);
     ResolvedSource r;
+    r.params = fit.params;
+    r.dt_s = s.dt_s > 0 ? s.dt_s : rec.dt_s;
+    r.duration_s = s.duration_s > 0 ? s.duration_s : synthetic::default_duration_s(r.params);
+    if (log)
+        *log << "record " << rec.path << ": I_a = " << format_short(fit.record.arias_m_s, 4)
+             << " m/s, D5-95 = " << format_short(fit.record.d595_s(), 4) << " s, t_mid = " << format_short(fit.record.t45_s, 4)
+             << " s, " << fit.record_extrema << " positive minima and negative maxima (model: "
+             << format_short(fit.simulated_extrema, 4) << ")\nfitted: " << synthetic::describe(fit.params) << "\n";
+    return r;
+}
+
+ResolvedSource resolve(const SyntheticSource& s, std::ostream* log) {
     if (s.fitted()) {
         const Record rec = read_record(record_source(s.record));
         // A record in the wrong unit would give motions 100x too strong or weak (synth) or a
         // model of another record's kind; the same refusal as simulate --record's.
         if (!s.any_pga && !plausible_pga(rec))
             throw InputError("record", s.record.record, implausible_pga(rec, "pass --record-any-pga to fit it"));
-        synthetic::FitSettings fs;
-        fs.fc_hz = s.params.fc_hz;
-        const synthetic::FitResult fit = synthetic::fit_model(rec.ax_g, rec.dt_s, fs);
-        r.params = fit.params;
-        r.dt_s = s.dt_s > 0 ? s.dt_s : rec.dt_s;
-        if (log)
-            *log << "record " << rec.path << ": I_a = " << format_short(fit.record.arias_m_s, 4)
-                 << " m/s, D5-95 = " << format_short(fit.record.d595_s(), 4) << " s, t_mid = " << format_short(fit.record.t45_s, 4)
-                 << " s, " << fit.record_extrema << " positive minima and negative maxima (model: "
-                 << format_short(fit.simulated_extrema, 4) << ")\nfitted: " << synthetic::describe(fit.params) << "\n";
-    } else {
-        r.params = s.params;
-        synthetic::check(r.params);
-        r.dt_s = s.dt_s > 0 ? s.dt_s : 0.01;
+        return fit_to_record(rec, s, log);
     }
+    ResolvedSource r;
+    r.params = s.params;
+    synthetic::check(r.params);
+    r.dt_s = s.dt_s > 0 ? s.dt_s : 0.01;
     r.duration_s = s.duration_s > 0 ? s.duration_s : synthetic::default_duration_s(r.params);
     return r;
 }

@@ -1,5 +1,7 @@
 #include "rocksweep/records/fragility.hpp"
 
+#include "fit_detail.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -14,17 +16,9 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kZ95 = 1.959963984540054;  // Phi^-1(0.975)
 constexpr double kLnSqrt2Pi = 0.91893853320467274;
 
-/// ln Phi(z), accurate in both tails: erfc where Phi is representable, the asymptotic series
-/// Phi(z) ~ phi(z) / |z| (1 - 1/z^2 + 3/z^4 - 15/z^6) below z = -35 (relative error < 1e-10).
-double log_cdf(double z) {
-    if (z > 0.0) return std::log1p(-0.5 * std::erfc(z / M_SQRT2));
-    if (z >= -35.0) return std::log(0.5 * std::erfc(-z / M_SQRT2));
-    const double r = 1.0 / (z * z);
-    return -0.5 * z * z - kLnSqrt2Pi - std::log(-z) + std::log1p(-r + 3 * r * r - 15 * r * r * r);
-}
-
-/// The inverse Mills ratio phi(z) / Phi(z): d ln Phi / dz.
-double mills(double z) { return std::exp(-0.5 * z * z - kLnSqrt2Pi - log_cdf(z)); }
+using fit_detail::intervals;
+using fit_detail::log_cdf;
+using fit_detail::mills;
 
 /// A concave function of two parameters near a point: value, gradient and Hessian.
 struct Local {
@@ -78,15 +72,6 @@ void check_intensity(double x, const char* what) {
         throw std::invalid_argument(std::string(what) + ": an intensity must be positive and finite");
 }
 
-/// Fills the 95 % Wald intervals from the standard errors.
-void intervals(FragilityFit& f) {
-    const double m = f.curve.median, b = f.curve.beta;
-    f.median_lo = m * std::exp(-kZ95 * f.se_ln_median);
-    f.median_hi = m * std::exp(kZ95 * f.se_ln_median);
-    f.beta_lo = b * std::exp(-kZ95 * f.se_beta / b);
-    f.beta_hi = b * std::exp(kZ95 * f.se_beta / b);
-}
-
 /// A fit with only its status and point estimates; every uncertainty NaN.
 FragilityFit limit_fit(FitStatus s, double median, double beta) {
     FragilityFit f;
@@ -106,6 +91,30 @@ double delta_variance(const Local& at, double j0, double j1, bool fix1) {
 }
 
 }  // namespace
+
+namespace fit_detail {
+
+void intervals(FragilityFit& f) {
+    const double m = f.curve.median, b = f.curve.beta;
+    f.median_lo = m * std::exp(-kZ95 * f.se_ln_median);
+    f.median_hi = m * std::exp(kZ95 * f.se_ln_median);
+    f.beta_lo = b * std::exp(-kZ95 * f.se_beta / b);
+    f.beta_hi = b * std::exp(kZ95 * f.se_beta / b);
+}
+
+/// ln Phi(z), accurate in both tails: erfc where Phi is representable, the asymptotic series
+/// Phi(z) ~ phi(z) / |z| (1 - 1/z^2 + 3/z^4 - 15/z^6) below z = -35 (relative error < 1e-10).
+double log_cdf(double z) {
+    if (z > 0.0) return std::log1p(-0.5 * std::erfc(z / M_SQRT2));
+    if (z >= -35.0) return std::log(0.5 * std::erfc(-z / M_SQRT2));
+    const double r = 1.0 / (z * z);
+    return -0.5 * z * z - kLnSqrt2Pi - std::log(-z) + std::log1p(-r + 3 * r * r - 15 * r * r * r);
+}
+
+/// The inverse Mills ratio phi(z) / Phi(z): d ln Phi / dz.
+double mills(double z) { return std::exp(-0.5 * z * z - kLnSqrt2Pi - log_cdf(z)); }
+
+}  // namespace fit_detail
 
 double normal_cdf(double z) { return 0.5 * std::erfc(-z / M_SQRT2); }
 

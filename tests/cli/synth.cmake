@@ -90,3 +90,33 @@ add_test(NAME cli.suite_synthetic_equals_written_motions
                           $rs suite --config $cfg --synthetic-count 5 $@ --intensity-points 5 -q -o $d/made.h5
                           h5diff $d/files.h5 $d/made.h5 /suite /suite"
                  ${CMAKE_CURRENT_BINARY_DIR}/synth_made_vs_files ${RS} ${CFG} ${MODEL})
+
+# suite --synthetic-per-record: N motions of the model fitted to each record of --suite
+# (docs/synthetic.md, "Motions fitted to each record"). Contradictions refused in one line.
+set(SITE ${PROJECT_SOURCE_DIR}/configs/records_suite.csv)
+bad_input(suite_per_record_with_count "--synthetic-count = 3 is invalid: not with --synthetic-per-record \\(motions of one model, or of the model fitted to each record of --suite: one of the two\\)"
+          suite --config ${CFG} --suite ${SITE} --synthetic-per-record 2 --synthetic-count 3 -o ${OUT})
+bad_input(suite_per_record_without_suite "--synthetic-per-record = 2 is invalid: with a --suite, to each of whose records the model is fitted"
+          suite --config ${CFG} --synthetic-per-record 2 -o ${OUT})
+bad_input(suite_per_record_with_model "--arias = 0.5 is invalid: not with --synthetic-per-record, which fits the model to each record of --suite"
+          suite --config ${CFG} --suite ${SITE} --synthetic-per-record 2 --arias 0.5 -o ${OUT})
+bad_input(suite_per_record_with_record "--record-units = g is invalid: not with --synthetic-per-record, which fits the model to each record of --suite"
+          suite --config ${CFG} --suite ${SITE} --synthetic-per-record 2 --record-units g -o ${OUT})
+bad_input(suite_synthetic_only_alone "--synthetic-only = \\(given\\) is invalid: only with --synthetic-per-record N \\(the records then only fit the model\\)"
+          suite --config ${CFG} --suite ${SITE} --synthetic-only -o ${OUT})
+bad_input(suite_per_record_negative "--synthetic-per-record = -1 is invalid: out of range; allowed: an integer in \\[0, 100000000\\]"
+          suite --config ${CFG} --suite ${SITE} --synthetic-per-record -1 -o ${OUT})
+bad_input(suite_per_record_dt "--dt = 0.05 is invalid: the filter's highest frequency, 5.603 Hz, must stay below a quarter of the sampling rate: dt < 0.04462 s \\(the model fitted to record sylmar_1994, .*records_suite.csv line 6\\)"
+          suite --config ${CFG} --suite ${SITE} --synthetic-per-record 2 --dt 0.05 -o ${OUT})
+set(PER_RECORD bash ${CMAKE_CURRENT_SOURCE_DIR}/suite_per_record.sh)
+add_test(NAME cli.bad_input.suite_per_record_records_refused
+         COMMAND ${PER_RECORD} refused ${RS} ${CFG} ${PROJECT_SOURCE_DIR}/tests/data ${CMAKE_CURRENT_BINARY_DIR}/per_record_refused)
+# Made on the ranks = synth's motions of each record's derived seed swept from files; resume checks.
+add_test(NAME cli.suite_per_record_equals_written_motions
+         COMMAND ${PER_RECORD} equal ${RS} ${CFG} ${PROJECT_SOURCE_DIR}/tests/data ${CMAKE_CURRENT_BINARY_DIR}/per_record_equal)
+add_test(NAME cli.suite_per_record_ranks_identical
+         COMMAND ${PER_RECORD} ranks ${RS} ${CFG} ${PROJECT_SOURCE_DIR}/tests/data ${CMAKE_CURRENT_BINARY_DIR}/per_record_ranks)
+add_test(NAME cli.suite_per_record_kill_resume.mpirun=2
+         COMMAND ${PER_RECORD} kill ${RS} ${CFG} ${PROJECT_SOURCE_DIR}/tests/data ${CMAKE_CURRENT_BINARY_DIR}/per_record_kill)
+set_tests_properties(cli.suite_per_record_ranks_identical cli.suite_per_record_kill_resume.mpirun=2
+                     PROPERTIES TIMEOUT 300 PROCESSORS 2)

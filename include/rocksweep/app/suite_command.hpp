@@ -18,6 +18,8 @@ struct SuiteCommand {
     SweepCommand run;  ///< output, resume, chunks, checkpoints (refinement and parts: not here)
     std::string suite;            ///< CSV of records; may be empty with synthetic motions
     SyntheticSource synthetic;    ///< --synthetic-count N motions of the model (docs/synthetic.md)
+    std::size_t synthetic_per_record = 0;  ///< --synthetic-per-record N: N motions fitted to each record of `suite`
+    bool synthetic_only = false;           ///< --synthetic-only: sweep those alone, the records only fit the model
     std::string measure = "pga";
     std::vector<double> intensity_range{0.05, 1.5};
     std::size_t intensity_points = 30;
@@ -41,8 +43,8 @@ void add_suite_hazard_options(CLI::App& sub, SuiteCommand& cmd);
 CLI::App* add_suite_command(CLI::App& app, SuiteCommand& cmd);
 
 /// Refuses, naming it, an option typed on the command line that the suite would ignore (the
-/// pulse and the spectra grid, refinement, the model's options without --synthetic-count), and
-/// a suite with neither --suite nor --synthetic-count. `suite` is the subcommand.
+/// pulse and the spectra grid, refinement), and the synthetic options' contradictions
+/// (check_suite_synthetic_options). `suite` is the subcommand.
 void check_suite_options(const CLI::App& app, const CLI::App& suite, const std::vector<std::string>& args,
                          const SuiteCommand& cmd);
 

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "rocksweep/app/options.hpp"
+#include "rocksweep/records/record.hpp"
 #include "rocksweep/synthetic/ground_model.hpp"
 
 namespace rocksweep {
@@ -40,6 +41,12 @@ struct ResolvedSource {
     double dt_s = 0.0, duration_s = 0.0;
 };
 ResolvedSource resolve(const SyntheticSource& source, std::ostream* log);
+
+/// The model fitted to `record` as read (its horizontal component; the vertical is not the
+/// model's), sampled at `source`'s --dt (default the record's) over its --motion-duration, with
+/// its --fc: what resolve() gives for --record, and `suite --synthetic-per-record` for each
+/// record of its suite. Throws InputError as fit_model does.
+ResolvedSource fit_to_record(const Record& record, const SyntheticSource& source, std::ostream* log);
 
 struct SynthCommand {
     SyntheticSource source;

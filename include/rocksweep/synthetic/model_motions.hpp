@@ -22,6 +22,9 @@ public:
     Record described(std::size_t i) const override { return generator_.described(seed_, i); }
     std::string describe() const override;
 
+    const Generator& generator() const { return generator_; }
+    std::uint64_t seed() const { return seed_; }
+
 private:
     Generator generator_;
     std::uint64_t seed_;

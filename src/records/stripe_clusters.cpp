@@ -1,0 +1,72 @@
+#include "rocksweep/records/stripe_clusters.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "fit_detail.hpp"
+
+namespace rocksweep {
+
+// P = Phi(z), z = a + b ln x with b = 1 / beta, a = -ln(median) / beta: the parameters the
+// likelihood is smooth in. The variance of a smooth function of them is the same whatever
+// parameters it is computed in (the delta method is invariant), so fit_stripes' centring is
+// not needed here.
+StripeClusters::StripeClusters(const FragilityFit& fit, std::vector<double> intensities) : fit_(fit) {
+    for (double x : intensities)
+        if (!(x > 0.0) || !std::isfinite(x)) throw std::invalid_argument("StripeClusters: an intensity must be positive and finite");
+    active_ = fit.status == FitStatus::ok && fit.curve.beta > 0.0 && std::isfinite(fit.curve.beta) &&
+              std::isfinite(fit.se_beta) && fit.se_beta > 0.0;
+    const double b = 1.0 / fit.curve.beta, a = -std::log(fit.curve.median) * b;
+    for (double x : intensities) {
+        const double u = std::log(x), z = a + b * u;
+        ln_x_.push_back(u);
+        score_reached_.push_back(active_ ? fit_detail::mills(z) : 0.0);
+        score_missed_.push_back(active_ ? -fit_detail::mills(-z) : 0.0);
+    }
+}
+
+void StripeClusters::add(std::span<const std::int8_t> outcome) {
+    if (outcome.size() != ln_x_.size()) throw std::invalid_argument("StripeClusters::add: one outcome per level");
+    double g0 = 0.0, g1 = 0.0;
+    for (std::size_t l = 0; l < outcome.size(); ++l) {
+        if (outcome[l] < 0) continue;
+        const double s = outcome[l] > 0 ? score_reached_[l] : score_missed_[l];
+        g0 += s;
+        g1 += s * ln_x_[l];
+    }
+    m00_ += g0 * g0;
+    m01_ += g0 * g1;
+    m11_ += g1 * g1;
+    ++records_;
+}
+
+FragilityFit StripeClusters::corrected(std::span<const Stripe> stripes) const {
+    if (!active_ || records_ < 2) return fit_;
+    // The Hessian of the pooled log-likelihood at the fit: d2 ln Phi(z) / dz2 = -l (l + z).
+    const double b = 1.0 / fit_.curve.beta, a = -std::log(fit_.curve.median) * b;
+    double h00 = 0.0, h01 = 0.0, h11 = 0.0;
+    for (const Stripe& s : stripes) {
+        const double u = std::log(s.intensity), z = a + b * u;
+        const double l1 = fit_detail::mills(z), l0 = fit_detail::mills(-z);
+        const double d2 = -s.exceed * l1 * (l1 + z) - (s.total - s.exceed) * l0 * (l0 - z);
+        h00 += d2;
+        h01 += d2 * u;
+        h11 += d2 * u * u;
+    }
+    const double det = h00 * h11 - h01 * h01;
+    if (!(h00 < 0.0 && det > 0.0)) return fit_;
+    // H^-1 = [[h11, -h01], [-h01, h00]] / det; V = H^-1 M H^-1 (G / (G - 1)).
+    const double i00 = h11 / det, i01 = -h01 / det, i11 = h00 / det;
+    const double k = static_cast<double>(records_) / static_cast<double>(records_ - 1);
+    auto variance = [&](double j0, double j1) {  // of a function with gradient (j0, j1) in (a, b)
+        const double w0 = i00 * j0 + i01 * j1, w1 = i01 * j0 + i11 * j1;  // H^-1 j
+        return k * (w0 * w0 * m00_ + 2.0 * w0 * w1 * m01_ + w1 * w1 * m11_);
+    };
+    FragilityFit f = fit_;
+    f.se_ln_median = std::sqrt(variance(-1.0 / b, a / (b * b)));  // ln median = -a / b
+    f.se_beta = std::sqrt(variance(0.0, -1.0 / (b * b)));           // beta = 1 / b
+    fit_detail::intervals(f);
+    return f;
+}
+
+}  // namespace rocksweep
