@@ -28,8 +28,15 @@ std::string FittedSuiteMotions::name(std::size_t j) const {
 }
 
 Record FittedSuiteMotions::motion(std::size_t j) const {
+    Record r = described(j);
+    const ModelMotions& model = models_[record_of(j)];
+    model.generator().generate(model.seed(), j % per_record_, r.ax_g);
+    return r;
+}
+
+Record FittedSuiteMotions::described(std::size_t j) const {
     const std::size_t k = record_of(j);
-    Record r = models_.at(k).motion(j % per_record_);
+    Record r = models_.at(k).described(j % per_record_);
     r.path += ":" + names_[k];  // synthetic:SEED:INDEX, SEED the record's own: synth --seed SEED writes it
     return r;
 }

@@ -54,6 +54,13 @@ TEST(FittedSuiteMotions, IsTheRecordsModelDrawnWithItsDerivedSeed) {
     EXPECT_EQ(got.ax_g, expected.ax_g);
     EXPECT_EQ(got.path, expected.path + ":spitak");
     EXPECT_EQ(got.path, "synthetic:" + std::to_string(s1) + ":2:spitak");
+    // What a suite keeps of it without making it (MotionSource::described).
+    const Record kept = m.described(4 + 2);
+    EXPECT_TRUE(kept.ax_g.empty());
+    EXPECT_EQ(kept.path, got.path);
+    EXPECT_EQ(kept.units, got.units);
+    EXPECT_EQ(kept.dt_s, got.dt_s);
+    EXPECT_EQ(kept.npts, got.npts);
 }
 
 TEST(FittedSuiteMotions, DiffersBetweenRecordsAndSeeds) {

@@ -36,6 +36,7 @@ public:
     std::string name(std::size_t j) const override;
     /// Path "synthetic:<record's seed>:<index>:<record>".
     Record motion(std::size_t j) const override;
+    Record described(std::size_t j) const override;
     std::string describe() const override;
 
     std::size_t records() const { return models_.size(); }
