@@ -5,6 +5,7 @@
 # read by h5py while it runs (the running file opens and counts its cells), stopped by SIGINT
 # after a few checkpoints, then resumed and stopped the same way. Each run's peak resident
 # memory must stay under 300 MB, and every cell the file counts done must hold its values.
+# Last, --overwrite of a finished file leaves it as it was until the new run's first checkpoint.
 set -u
 rs="$1"; cfg="$2"; record="$3"; dir="$4"
 source "$(dirname "${BASH_SOURCE[0]}")/kill_job.sh"
@@ -13,8 +14,9 @@ fail() { echo "FAIL: $*"; exit 1; }
 limit_kb=$((300 * 1024))
 printf 'name,file,format,units\nloma,%s,time_accel,m/s^2\n' "$record" > "$dir/one.csv"
 out="$dir/big.h5"
-args=(suite --config "$cfg" --suite "$dir/one.csv" --anchorages free --intensity-points 100000
-      --radius-range 0.5 3 --radius-points 1000 --checkpoint-interval 0.2 -o "$out")
+base=(suite --config "$cfg" --suite "$dir/one.csv" --anchorages free --intensity-points 100000
+      --radius-range 0.5 3 --radius-points 1000 -o "$out")
+args=("${base[@]}" --checkpoint-interval 0.2)
 
 # run_and_stop NAME [OPTION...]: the suite under /usr/bin/time, read while it runs, then SIGINT.
 run_and_stop() {
@@ -60,5 +62,20 @@ with h5py.File(sys.argv[1], "r") as f:
     assert np.all(np.isfinite(rot)) and np.all(rot >= 0), "a cell counted done without its values"
     print(f"{n} runs done of 10^8 after two stops; file {f.id.get_filesize() / 1e6:.0f} MB apparent")
 PY
+
+# --overwrite: the previous file stays whole until the new run has something to show.
+"$rs" suite --config "$cfg" --suite "$dir/one.csv" --anchorages free --intensity-points 4 --quiet -o "$out" --overwrite ||
+  fail "small suite"
+sum=$(md5sum < "$out")
+"$rs" "${base[@]}" --overwrite --checkpoint-interval 60 > "$dir/overwrite.log" 2>&1 &
+pid=$!
+for ((i = 0; i < 300; i++)); do [ -f "$out.tmp" ] && break; sleep 0.05; done
+[ -f "$out.tmp" ] || fail "--overwrite: no $out.tmp while the new run starts"
+sleep 0.5
+[ "$(md5sum < "$out")" = "$sum" ] || fail "--overwrite replaced the previous file before the first checkpoint"
+kill -INT "$pid"
+wait "$pid"
+[ ! -e "$out.tmp" ] || fail "--overwrite: $out.tmp left after SIGINT"
+h5dump -a /n_cells "$out" | grep -q "(0): 100000000$" || fail "--overwrite: SIGINT did not save the new run"
 rm -f "$out"
-echo "suite rank-0 memory flat at 10^8 runs"
+echo "suite rank-0 memory flat at 10^8 runs; --overwrite keeps the previous file until a checkpoint"
