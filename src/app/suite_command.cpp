@@ -9,6 +9,7 @@
 #include <iomanip>
 #include <optional>
 
+#include "rocksweep/app/memory_budget.hpp"
 #include "rocksweep/app/option_checks.hpp"
 #include "rocksweep/app/resume_check.hpp"
 #include "rocksweep/app/run_support.hpp"
@@ -169,6 +170,15 @@ Plan make_plan(const Options& opts, const SuiteCommand& cmd) {
     p.states.push_back({0.0, true});
     p.spec.sensitivity.on = cmd.check_sensitivity;
     p.spec.sensitivity.damage_ratios = cmd.damage_states;
+    // Rank 0 holds the runs since the last checkpoint, not the results (docs/streaming.md); what
+    // it must hold at the end is one scenario's products: per record and block the overturning
+    // spectrum (25 B), per state, block and level the fragility's counts and fractions (32 B).
+    const SuiteSpec& spec = p.spec;
+    const double blocks = static_cast<double>(spec.alphas_rad.size() * spec.radii_m.size()),
+                 states = static_cast<double>(p.states.size()), levels = static_cast<double>(spec.intensity.points);
+    require_memory("radius-points", std::to_string(cmd.radius_points),
+                   blocks * (25.0 * static_cast<double>(spec.records.size()) + states * (32.0 * levels + 128.0)),
+                   "the products (overturning spectra, fragility) of " + format_short(blocks) + " block sizes and slendernesses");
     return p;
 }
 
