@@ -84,11 +84,14 @@ SuiteStream::SuiteStream(std::string path, const SuiteSpec& spec, const Integrat
         streaming = f.open_group("provenance").has_attribute("checkpoint_s");
     }
     if (finished_) return;
-    if (streaming) try {
+    if (streaming) {
+        try {
             cells_.open();
             return;
         } catch (const Hdf5Error&) {
+            // Its result datasets are not contiguous: written whole after all.
         }
+    }
     // Written whole (compressed) by an older rocksweep: rewritten once in the streaming layout,
     // through NAME.tmp, so that a kill meanwhile leaves the original. It held every result.
     const SweepResults whole = read_suite_results(file, spec_, settings_);
