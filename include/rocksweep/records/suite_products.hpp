@@ -40,4 +40,27 @@ struct SuiteFragility {
 SuiteFragility suite_fragility(const SuiteSpec& spec, const SweepResults& r, std::size_t s,
                                const std::vector<DamageState>& states);
 
+/// Both products of one scenario, gathered a slab of records at a time, so that whoever reads
+/// the results (from a file, say) never holds more than a slab: the overturning spectrum needs
+/// each record's own levels, the fragility only counts per [state, alpha, radius, level].
+class SuiteProducts {
+public:
+    /// Keeps a reference to `spec`, which must outlive it.
+    SuiteProducts(const SuiteSpec& spec, std::size_t scenario, std::vector<DamageState> states);
+    /// Records [first_record, first_record + records) of the scenario, every one of their
+    /// cells ([record, alpha, radius, level] in C order) in `r` from entry `offset` on.
+    /// Each record once.
+    void add(const SweepResults& r, std::size_t offset, std::size_t first_record, std::size_t records);
+    /// Of the records added: complete once every record is.
+    const OverturningSpectrum& overturning() const { return overturning_; }
+    /// The stripes of the records added, and a lognormal fit to them per state and block.
+    SuiteFragility fragility() const;
+
+private:
+    const SuiteSpec& spec_;
+    std::size_t scenario_;
+    OverturningSpectrum overturning_;
+    SuiteFragility counts_;  // exceed, total and sensitive; no fits
+};
+
 }  // namespace rocksweep
