@@ -133,6 +133,13 @@ std::vector<SuiteFragility> SuiteStream::write_finished(const std::vector<Damage
                 });
                 products.add(slab, 0, first, n);
             }
+            // The fits' errors need each record's runs again, with the fit in hand.
+            products.fit();
+            for (std::size_t first = 0; first < dims[0]; first += rows) {
+                const std::size_t n = std::min<std::size_t>(rows, dims[0] - first);
+                cells_.read_cells(s * spec_.cells_per_scenario() + first * per_record, n * per_record, slab);
+                products.add_errors(slab, 0, n);
+            }
             fragility.push_back(products.fragility());
             suite_detail::write_products(g, spec_, products.overturning(), fragility.back());
         }

@@ -1,6 +1,7 @@
 #include "rocksweep/records/suite_products.hpp"
 
 #include <cmath>
+#include <stdexcept>
 
 namespace rocksweep {
 
@@ -74,24 +75,66 @@ void SuiteProducts::add(const SweepResults& r, std::size_t offset, std::size_t f
         }
 }
 
-SuiteFragility SuiteProducts::fragility() const {
+std::vector<Stripe> SuiteProducts::stripes(std::size_t d, std::size_t b) const {
     const std::size_t blocks = blocks_of(spec_), levels = spec_.intensity.points;
-    SuiteFragility f = counts_;
-    for (std::size_t d = 0; d < f.states.size(); ++d)
+    std::vector<Stripe> out;
+    for (std::size_t l = 0; l < levels; ++l) {
+        const std::size_t k = (d * blocks + b) * levels + l;
+        if (counts_.total[k] > 0) out.push_back({spec_.intensity.at(l), counts_.exceed[k], counts_.total[k]});
+    }
+    return out;
+}
+
+void SuiteProducts::fit() {
+    const std::size_t blocks = blocks_of(spec_);
+    std::vector<double> levels;
+    for (std::size_t l = 0; l < spec_.intensity.points; ++l) levels.push_back(spec_.intensity.at(l));
+    fits_.clear();
+    clusters_.clear();
+    for (std::size_t d = 0; d < counts_.states.size(); ++d)
         for (std::size_t b = 0; b < blocks; ++b) {
-            std::vector<Stripe> stripes;
-            for (std::size_t l = 0; l < levels; ++l) {
-                const std::size_t k = (d * blocks + b) * levels + l;
-                if (f.total[k] > 0) stripes.push_back({spec_.intensity.at(l), f.exceed[k], f.total[k]});
-            }
+            const std::vector<Stripe> st = stripes(d, b);
             FragilityFit fit;
-            if (stripes.empty()) {
+            if (st.empty()) {
                 fit.status = FitStatus::none_reached;
                 fit.curve = {INFINITY, NAN};
             } else {
-                fit = fit_stripes(stripes);
+                fit = fit_stripes(st);
             }
-            f.fits.push_back(fit);
+            fits_.push_back(fit);
+            clusters_.emplace_back(fit, levels);
+        }
+}
+
+void SuiteProducts::add_errors(const SweepResults& r, std::size_t offset, std::size_t records) {
+    if (clusters_.empty()) throw std::logic_error("SuiteProducts::add_errors before fit()");
+    const std::size_t blocks = blocks_of(spec_), levels = spec_.intensity.points, states = counts_.states.size();
+    std::vector<std::int8_t> outcome(levels);
+    for (std::size_t j = 0; j < records; ++j)
+        for (std::size_t b = 0; b < blocks; ++b) {
+            const std::size_t at = offset + (j * blocks + b) * levels;
+            for (std::size_t d = 0; d < states; ++d) {
+                for (std::size_t l = 0; l < levels; ++l) {
+                    const std::size_t i = at + l;
+                    outcome[l] = r.outcome[i] == not_converged ? -1
+                                 : reaches({spec_.intensity.at(l), r.max_rotation[i], r.outcome[i] != 0}, counts_.states[d])
+                                     ? 1
+                                     : 0;
+                }
+                clusters_[d * blocks + b].add(outcome);
+            }
+        }
+}
+
+SuiteFragility SuiteProducts::fragility() const {
+    if (clusters_.empty()) throw std::logic_error("SuiteProducts::fragility before fit()");
+    const std::size_t blocks = blocks_of(spec_);
+    SuiteFragility f = counts_;
+    for (std::size_t d = 0; d < f.states.size(); ++d)
+        for (std::size_t b = 0; b < blocks; ++b) {
+            const std::size_t k = d * blocks + b;
+            const StripeClusters& c = clusters_[k];
+            f.fits.push_back(c.records() > 0 ? c.corrected(stripes(d, b)) : fits_[k]);
         }
     return f;
 }
@@ -105,7 +148,10 @@ OverturningSpectrum overturning_spectrum(const SuiteSpec& spec, const SweepResul
 SuiteFragility suite_fragility(const SuiteSpec& spec, const SweepResults& r, std::size_t s,
                                const std::vector<DamageState>& states) {
     SuiteProducts p(spec, s, states);
-    p.add(r, s * spec.cells_per_scenario(), 0, spec.records.size());
+    const std::size_t offset = s * spec.cells_per_scenario();
+    p.add(r, offset, 0, spec.records.size());
+    p.fit();
+    p.add_errors(r, offset, spec.records.size());
     return p.fragility();
 }
 
