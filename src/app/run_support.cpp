@@ -1,5 +1,6 @@
 #include "rocksweep/app/run_support.hpp"
 
+#include <algorithm>
 #include <cstring>
 #include <stdexcept>
 #include <ctime>
@@ -70,17 +71,6 @@ ComputeFn cell_results_compute(std::function<void(std::size_t, std::size_t, Cell
     };
 }
 
-SinkFn cell_results_sink(SweepResults& results, std::size_t& done) {
-    return [&results, &done](std::size_t first, std::size_t count, const std::byte* records) {
-        for (std::size_t i = 0; i < count; ++i) {
-            CellResult r;
-            std::memcpy(&r, records + i * sizeof(CellResult), sizeof r);
-            results.store(first + i, r);
-        }
-        done += count;
-    };
-}
-
 std::string utc_now() {
     char buf[32];
     const std::time_t t = std::time(nullptr);
@@ -98,6 +88,23 @@ std::vector<IndexRange> missing_ranges(const std::vector<std::uint8_t>& done) {
         while (j < done.size() && !done[j]) ++j;
         todo.push_back({i, j - i});
         i = j;
+    }
+    return todo;
+}
+
+std::vector<IndexRange> missing_cells(std::size_t total, const DoneReader& read_done) {
+    // Cells whose `done` byte is read at once: what a resume holds, whatever the grid.
+    constexpr std::size_t scan_cells = std::size_t{1} << 24;
+    std::vector<IndexRange> todo;
+    std::vector<std::uint8_t> done;
+    for (std::size_t first = 0; first < total; first += scan_cells) {
+        done.resize(std::min(scan_cells, total - first));
+        read_done(first, done.size(), done.data());
+        for (IndexRange r : missing_ranges(done)) {
+            r.first += first;
+            if (!todo.empty() && todo.back().first + todo.back().count == r.first) todo.back().count += r.count;
+            else todo.push_back(r);
+        }
     }
     return todo;
 }

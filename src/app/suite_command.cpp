@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <functional>
 #include <iomanip>
 #include <optional>
@@ -18,6 +19,7 @@
 #include "rocksweep/io/output_claim.hpp"
 #include "rocksweep/io/run_inputs.hpp"
 #include "rocksweep/io/suite_file.hpp"
+#include "rocksweep/io/suite_stream.hpp"
 #include "rocksweep/motion/floor_filter.hpp"
 #include "rocksweep/parallel/progress.hpp"
 #include "rocksweep/parallel/scheduler.hpp"
@@ -160,36 +162,52 @@ Plan make_plan(const Options& opts, const SuiteCommand& cmd, const MpiSession& m
     p.states.push_back({0.0, true});
     p.spec.sensitivity.on = cmd.check_sensitivity;
     p.spec.sensitivity.damage_ratios = cmd.damage_states;
-    const double cells = static_cast<double>(p.spec.cell_count());
-    require_memory("intensity-points", std::to_string(cmd.intensity_points), cells * static_cast<double>(SweepResults::bytes_per_cell()),
-                   "the results of " + format_short(cells) + " cells");
+    // Rank 0 holds the runs since the last checkpoint, not the results (docs/streaming.md); what
+    // it must hold at the end is one scenario's products: per record and block the overturning
+    // spectrum (25 B), per state, block and level the fragility's counts and fractions (32 B).
+    const SuiteSpec& spec = p.spec;
+    const double blocks = static_cast<double>(spec.alphas_rad.size() * spec.radii_m.size()),
+                 states = static_cast<double>(p.states.size()), levels = static_cast<double>(spec.intensity.points);
+    require_memory("radius-points", std::to_string(cmd.radius_points),
+                   blocks * (25.0 * static_cast<double>(spec.records.size()) + states * (32.0 * levels + 128.0)),
+                   "the products (overturning spectra, fragility) of " + format_short(blocks) + " block sizes and slendernesses");
     return p;
 }
+
+// Rank 0 checkpoints early when the cells it holds reach this, as `sweep` does: its memory
+// bound between checkpoints, whatever the suite and the cell rate.
+constexpr std::size_t max_pending_bytes = std::size_t{64} << 20;
 
 /// Rank 0's view of the output before any work.
 struct Start {
     std::optional<OutputClaim> claim;
-    SweepResults results;
+    std::optional<SuiteStream> stream;
     std::vector<IndexRange> todo;
     bool complete = false;  ///< resumed a finished suite: nothing to do
 };
 
-void prepare_output(Start& s, const Plan& plan, const SweepCommand& cmd, const std::string& config_text, std::ostream& log) {
+void prepare_output(Start& s, const Plan& plan, const SweepCommand& cmd, const Provenance& prov, std::ostream& log) {
     if (cmd.resume && cmd.overwrite) throw InputError("resume", "with --overwrite", "one of --resume, --overwrite");
     s.claim.emplace("output", cmd.output);
-    s.results.resize(plan.spec.cell_count());
-    const bool exists = s.claim->exists();
-    if (exists && cmd.resume) {
-        s.results = read_suite_results(cmd.output, plan.spec, plan.settings);
-        check_resumed_config(cmd.output, read_provenance_config(cmd.output), config_text);
-    }
-    else if (exists && !cmd.overwrite)
+    const bool exists = s.claim->exists(), resuming = exists && cmd.resume;
+    if (exists && !cmd.resume && !cmd.overwrite)
         throw InputError("output", cmd.output, "a new file; it exists: pass --resume to continue it or --overwrite to replace it");
-    s.todo = missing_ranges(s.results.done);
-    s.complete = exists && cmd.resume && s.todo.empty();
-    if (exists && cmd.resume && !cmd.quiet)
+    if (resuming) {  // the file's own checks first (their messages are the more precise), then every option
+        check_suite_file(cmd.output, plan.spec, plan.settings);
+        check_resumed_config(cmd.output, read_provenance_config(cmd.output), prov.config_text);
+    }
+    s.stream.emplace(cmd.output, plan.spec, plan.settings, prov, resuming);
+    const std::size_t total = plan.spec.cell_count();
+    SuiteStream& stream = *s.stream;
+    if (!stream.finished())
+        s.todo = resuming ? missing_cells(total, [&](std::size_t first, std::size_t count, std::uint8_t* out) {
+            stream.read_done(first, count, out);
+        })
+                          : std::vector<IndexRange>{{0, total}};
+    s.complete = stream.finished();
+    if (resuming && !cmd.quiet)
         log << cmd.output << (s.complete ? ": suite already complete; nothing to do\n" : ": resuming, ")
-            << (s.complete ? "" : std::to_string(s.results.done_count()) + " of " + std::to_string(s.results.size()) + " cells already done\n");
+            << (s.complete ? "" : std::to_string(stream.done_count()) + " of " + std::to_string(total) + " cells already done\n");
 }
 
 std::size_t nearest(const std::vector<double>& axis, double x) {
@@ -201,7 +219,7 @@ std::size_t nearest(const std::vector<double>& axis, double x) {
 
 /// One line per scenario: where the fragility of overturning lies, for the block nearest the
 /// configured one.
-void summarise(const Plan& plan, const SweepResults& r, std::ostream& log) {
+void summarise(const Plan& plan, const std::vector<SuiteFragility>& fragility, std::ostream& log) {
     const SuiteSpec& spec = plan.spec;
     const std::size_t a = nearest(spec.alphas_rad, spec.block.alpha_rad), j = nearest(spec.radii_m, spec.block.radius_m);
     const IntensityMeasure m = spec.measure;
@@ -212,8 +230,10 @@ void summarise(const Plan& plan, const SweepResults& r, std::ostream& log) {
     int width = 22;  // names on floors ("adaptive_rho0.1@f4_plinth") run longer
     for (const Scenario& sc : spec.scenarios) width = std::max(width, static_cast<int>(sc.name.size()) + 2);
     for (std::size_t s = 0; s < spec.scenarios.size(); ++s) {
-        const SuiteFragility fr = suite_fragility(spec, r, s, {plan.states.back()});
-        const std::size_t k = a * spec.radii_m.size() + j;
+        // Overturning is the last damage state.
+        const SuiteFragility& fr = fragility.at(s);
+        const std::size_t blocks = spec.alphas_rad.size() * spec.radii_m.size();
+        const std::size_t k = (plan.states.size() - 1) * blocks + a * spec.radii_m.size() + j;
         const FragilityFit& fit = fr.fits.at(k);
         log << "  " << std::left << std::setw(width) << spec.scenarios[s].name << std::right;
         if (fit.status == FitStatus::ok)
@@ -235,27 +255,26 @@ int run_suite(const Options& opts, const SuiteCommand& cmd, const std::string& c
     RootStream log(mpi);
     const StopSignals signals;
 
+    const Provenance prov{ROCKSWEEP_VERSION, config_text, utc_now(), mpi.size(), 0.0};
     Start start;
     const OutputVerdict verdict = agree_on_output(
-        mpi, log, [&] { prepare_output(start, plan, cmd.run, config_text, log); return start.complete; }, [&] { start.claim.reset(); });
+        mpi, log, [&] { prepare_output(start, plan, cmd.run, prov, log); return start.complete; },
+        [&] { start.stream.reset(), start.claim.reset(); });
     if (verdict != OutputVerdict::go) return exit_status(verdict);
 
-    const Provenance base{ROCKSWEEP_VERSION, config_text, utc_now(), mpi.size(), 0.0};
-    SweepResults& results = start.results;
     std::size_t done_now = 0;
     const double t0 = MpiSession::wall_time();
     double last_save = t0;
     std::string save_error;  // a failed save stops the run like a signal; reported once at the end
-    auto save = [&] {
-        Provenance prov = base;
-        prov.wall_s = MpiSession::wall_time() - t0;
+    auto save = [&](auto&& write) {
         try {
-            write_suite(cmd.run.output, spec, results, plan.states, prov, settings);
+            write();
         } catch (const std::exception& e) {
             if (save_error.empty()) save_error = e.what();
         }
         last_save = MpiSession::wall_time();
     };
+    auto checkpoint = [&] { save([&] { start.stream->checkpoint(); }); };
     const auto scheduler = make_scheduler(mpi);
     std::size_t todo = 0;
     for (const IndexRange& r : start.todo) todo += r.count;
@@ -270,14 +289,21 @@ int run_suite(const Options& opts, const SuiteCommand& cmd, const std::string& c
     so.tick_interval_s = std::min(0.5, cmd.run.checkpoint_s / 2);
     so.on_tick = [&] {
         progress.update(done_now);
-        if (MpiSession::wall_time() - last_save >= cmd.run.checkpoint_s) save();
+        if (MpiSession::wall_time() - last_save >= cmd.run.checkpoint_s) checkpoint();
     };
     settings.stop_requested = [&] { return StopSignals::received() != 0 || scheduler->stop_pending(); };
     const int lanes = opts.numerics.lanes;
     const ComputeFn compute = cell_results_compute([&](std::size_t first, std::size_t count, CellResult* out) {
         compute_suite_cells(spec, settings, first, count, out, lanes);
     });
-    const SinkFn sink = cell_results_sink(results, done_now);
+    std::vector<CellResult> cells;
+    const SinkFn sink = [&](std::size_t first, std::size_t count, const std::byte* records) {
+        cells.resize(count);
+        std::memcpy(cells.data(), records, count * sizeof(CellResult));
+        start.stream->add(first, count, cells.data());
+        done_now += count;
+        if (start.stream->pending_bytes() >= max_pending_bytes) checkpoint();
+    };
 
     if (mpi.is_root() && !cmd.run.quiet) {
         // What each record is as read: a wrong unit shows before the results are believed.
@@ -292,19 +318,20 @@ int run_suite(const Options& opts, const SuiteCommand& cmd, const std::string& c
     progress.update(done_now);
     progress.finish();
     if (!mpi.is_root()) return 0;  // rank 0 alone decides the job's status
-    if (save_error.empty()) save();
+    std::vector<SuiteFragility> fragility;
+    if (save_error.empty()) save([&] { fragility = start.stream->finish(plan.states, MpiSession::wall_time() - t0); });
     if (!save_error.empty()) {
         log << "rocksweep: error: " << save_error << "\n";
         return 1;
     }
-    const std::size_t done = results.done_count();
-    if (done < results.size()) {
-        log << "stopped by signal " << StopSignals::stopping_signal() << ": " << done << " of " << results.size()
-            << " cells saved in " << cmd.run.output << "; rerun with --resume to continue\n";
+    const std::size_t done = start.stream->done_count(), total = spec.cell_count();
+    if (done < total) {
+        log << "stopped by signal " << StopSignals::stopping_signal() << ": " << done << " of " << total << " cells saved in "
+            << cmd.run.output << "; rerun with --resume to continue\n";
         return StopSignals::exit_status();
     }
     if (!cmd.run.quiet) {
-        summarise(plan, results, log);
+        summarise(plan, fragility, log);
         log << "wrote " << cmd.run.output << "\n";
     }
     return 0;

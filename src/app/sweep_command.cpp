@@ -31,24 +31,10 @@ namespace {
 // checkpoints, whatever the grid and the cell rate (about 1 M cells).
 constexpr std::size_t max_pending_bytes = std::size_t{64} << 20;
 
-// Cells whose `done` byte rank 0 reads at once when it looks for the cells still to compute.
-constexpr std::size_t scan_cells = std::size_t{1} << 24;
-
-/// The runs of cells the file does not hold yet, read a block at a time (1 byte per cell of
-/// the block, not of the grid).
 std::vector<IndexRange> missing_cells(const SpectraStream& stream, std::size_t total) {
-    std::vector<IndexRange> todo;
-    std::vector<std::uint8_t> done;
-    for (std::size_t first = 0; first < total; first += scan_cells) {
-        done.resize(std::min(scan_cells, total - first));
-        stream.read_column("done", first, done.size(), done.data());
-        for (IndexRange r : missing_ranges(done)) {
-            r.first += first;
-            if (!todo.empty() && todo.back().first + todo.back().count == r.first) todo.back().count += r.count;
-            else todo.push_back(r);
-        }
-    }
-    return todo;
+    return rocksweep::missing_cells(total, [&](std::size_t first, std::size_t count, std::uint8_t* out) {
+        stream.read_column("done", first, count, out);
+    });
 }
 
 /// One sweep, in the order it runs: plan (constructor), agree on the output, run the passes,
@@ -303,6 +289,7 @@ void SweepRun::run_passes() {
 
 void SweepRun::report_friction() {
     // Read back a block at a time: the cells of earlier runs of a resumed sweep count too.
+    constexpr std::size_t scan_cells = std::size_t{1} << 24;
     const std::size_t total = spec_.cell_count();
     std::size_t slide = 0, jump = 0;
     std::vector<double> mu;

@@ -45,6 +45,11 @@ h5::Dataset GridGroup::write_axes(std::string_view name, std::span<const T> valu
     std::vector<hsize_t> dims;
     for (std::size_t a : which) dims.push_back(axes_[a].values.size());
     h5::Dataset ds = h5::write_dataset<T>(group_, name, values, dims);
+    attach(ds, which);
+    return ds;
+}
+
+void GridGroup::attach(const h5::Dataset& ds, const std::vector<std::size_t>& which) const {
     std::string names;
     for (unsigned d = 0; d < which.size(); ++d) {
         h5::attach_scale(ds, scales_[which[d]], d);
@@ -52,6 +57,16 @@ h5::Dataset GridGroup::write_axes(std::string_view name, std::span<const T> valu
     }
     // The order in words, for readers that show neither scales nor netCDF dimensions.
     h5::write_attribute(ds, "dimensions", names);
+}
+
+template <h5::Element T>
+h5::Dataset GridGroup::create(std::string_view name, std::span<const hsize_t> chunk) const {
+    std::vector<std::size_t> all(axes_.size());
+    for (std::size_t a = 0; a < all.size(); ++a) all[a] = a;
+    const std::vector<hsize_t> dims = grid_dims(axes_);
+    h5::Dataset ds = chunk.empty() ? h5::create_fixed_dataset<T>(group_, name, dims)
+                                   : h5::create_chunked_dataset<T>(group_, name, dims, chunk);
+    attach(ds, all);
     return ds;
 }
 
@@ -78,7 +93,8 @@ h5::Dataset GridGroup::write_on(std::string_view name, std::span<const T> values
 #define ROCKSWEEP_GRID_WRITERS(T)                                                                              \
     template h5::Dataset GridGroup::write<T>(std::string_view, std::span<const T>) const;                      \
     template h5::Dataset GridGroup::write_on<T>(std::string_view, std::span<const T>,                          \
-                                                std::initializer_list<std::string_view>) const;
+                                                std::initializer_list<std::string_view>) const;            \
+    template h5::Dataset GridGroup::create<T>(std::string_view, std::span<const hsize_t>) const;
 ROCKSWEEP_GRID_WRITERS(double)
 ROCKSWEEP_GRID_WRITERS(std::int32_t)
 ROCKSWEEP_GRID_WRITERS(std::uint8_t)

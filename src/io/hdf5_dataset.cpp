@@ -83,6 +83,40 @@ Dataset write_dataset(const Location& where, std::string_view name, std::span<co
     return ds;
 }
 
+template <Element T>
+Dataset create_chunked_dataset(const Location& where, std::string_view name, std::span<const hsize_t> dims,
+                               std::span<const hsize_t> chunk) {
+    const std::string n(name);
+    const std::string what = "creating dataset " + in_quotes(n) + " under " + in_quotes(where.name());
+    const Dataspace space = Dataspace::simple(dims);
+    PropertyList dcpl = PropertyList::create(H5P_DATASET_CREATE);
+    check(H5Pset_obj_track_times(dcpl.id(), 0), what);
+    check(H5Pset_chunk(dcpl.id(), static_cast<int>(chunk.size()), chunk.data()), what);
+    check(H5Pset_shuffle(dcpl.id()), what);
+    check(H5Pset_deflate(dcpl.id(), 4), what);
+    const hid_t d = H5Dcreate2(where.id(), n.c_str(), Types<T>::file(), space.id(), H5P_DEFAULT, dcpl.id(), H5P_DEFAULT);
+    if (d < 0) fail(what);
+    return Dataset(d);
+}
+
+template <Element T>
+void write_rows(const Dataset& ds, hsize_t first, hsize_t rows, std::span<const T> data) {
+    const std::string what = "writing rows of dataset " + in_quotes(ds.name());
+    std::vector<hsize_t> dims = ds.dims(), start(dims.size(), 0);
+    std::size_t per_row = 1;
+    for (std::size_t d = 1; d < dims.size(); ++d) per_row *= dims[d];
+    if (dims.empty() || first + rows > dims[0] || data.size() != rows * per_row)
+        throw std::invalid_argument(what + ": " + std::to_string(data.size()) + " values for rows " + std::to_string(first) +
+                                    " + " + std::to_string(rows));
+    if (rows == 0) return;
+    start[0] = first;
+    dims[0] = rows;
+    const Dataspace file_space(static_cast<hid_t>(check(H5Dget_space(ds.id()), what)));
+    check(H5Sselect_hyperslab(file_space.id(), H5S_SELECT_SET, start.data(), nullptr, dims.data(), nullptr), what);
+    const Dataspace memory_space = Dataspace::simple(dims);
+    check(H5Dwrite(ds.id(), Types<T>::memory(), memory_space.id(), file_space.id(), H5P_DEFAULT, data.data()), what);
+}
+
 namespace {
 constexpr std::size_t any_rank = SIZE_MAX;
 
@@ -134,6 +168,15 @@ template Dataset write_dataset<std::int32_t>(const Location&, std::string_view,
                                              std::span<const std::int32_t>, std::span<const hsize_t>);
 template Dataset write_dataset<std::uint8_t>(const Location&, std::string_view,
                                              std::span<const std::uint8_t>, std::span<const hsize_t>);
+template Dataset create_chunked_dataset<double>(const Location&, std::string_view, std::span<const hsize_t>,
+                                                std::span<const hsize_t>);
+template Dataset create_chunked_dataset<std::int32_t>(const Location&, std::string_view, std::span<const hsize_t>,
+                                                      std::span<const hsize_t>);
+template Dataset create_chunked_dataset<std::uint8_t>(const Location&, std::string_view, std::span<const hsize_t>,
+                                                      std::span<const hsize_t>);
+template void write_rows<double>(const Dataset&, hsize_t, hsize_t, std::span<const double>);
+template void write_rows<std::int32_t>(const Dataset&, hsize_t, hsize_t, std::span<const std::int32_t>);
+template void write_rows<std::uint8_t>(const Dataset&, hsize_t, hsize_t, std::span<const std::uint8_t>);
 template std::vector<double> read_1d<double>(const Location&, std::string_view);
 template std::vector<std::int32_t> read_1d<std::int32_t>(const Location&, std::string_view);
 template std::vector<std::uint8_t> read_1d<std::uint8_t>(const Location&, std::string_view);

@@ -13,26 +13,27 @@ namespace {
 
 bool same_number(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
 
-template <h5::Element T>
-std::span<const T> block_of(const std::vector<T>& column, std::size_t first, std::size_t cells) {
-    return {column.data() + first, cells};
-}
+/// The empty dataset of one result column, filled later by its writer (`chunk`: see
+/// write_result_columns).
+struct EmptyColumns {
+    const GridGroup& grid;
+    std::span<const hsize_t> chunk;
+};
 
 /// A measured quantity: the grid with its units, long_name and, where there is one, comment.
 template <h5::Element T>
-void write_measure(const GridGroup& grid, const char* name, const std::vector<T>& column, std::size_t first,
-                   const char* units, const char* long_name, const char* comment = nullptr) {
-    const h5::Dataset ds = grid.write<T>(name, block_of(column, first, grid.cell_count()));
+void write_measure(const EmptyColumns& c, const char* name, const char* units, const char* long_name,
+                   const char* comment = nullptr) {
+    const h5::Dataset ds = c.grid.create<T>(name, c.chunk);
     h5::write_attribute(ds, "units", units);
     h5::write_attribute(ds, "long_name", long_name);
     if (comment) h5::write_attribute(ds, "comment", comment);
 }
 
 /// A code: the grid with its long_name and the CF flag attributes, and a comment where there is one.
-void write_code(const GridGroup& grid, const char* name, const std::vector<std::uint8_t>& column, std::size_t first,
-                const char* long_name, const char* flag_kind, std::span<const std::uint8_t> flags, const char* meanings,
-                const char* comment = nullptr) {
-    const h5::Dataset ds = grid.write<std::uint8_t>(name, block_of(column, first, grid.cell_count()));
+void write_code(const EmptyColumns& c, const char* name, const char* long_name, const char* flag_kind,
+                std::span<const std::uint8_t> flags, const char* meanings, const char* comment = nullptr) {
+    const h5::Dataset ds = c.grid.create<std::uint8_t>(name, c.chunk);
     h5::write_attribute(ds, "long_name", long_name);
     h5::write_attribute(ds, flag_kind, flags);
     h5::write_attribute(ds, "flag_meanings", meanings);
@@ -155,42 +156,37 @@ void write_scenario_attributes(const h5::Group& g, std::size_t index, const Scen
     write_numbers(g, scenario_numbers(s));
 }
 
-void write_result_columns(const GridGroup& grid, const SweepResults& r, std::size_t first) {
+void write_result_columns(const GridGroup& grid, std::span<const hsize_t> chunk, bool sensitive) {
+    const EmptyColumns c{grid, chunk};
     const std::uint8_t outcomes[] = {0, 1, 2, 255};
-    write_code(grid, "outcome", r.outcome, first, "outcome of the run", "flag_values", outcomes,
+    write_code(c, "outcome", "outcome of the run", "flag_values", outcomes,
                "safe overturned_with_impact overturned_without_impact not_converged");
-    write_measure(grid, "max_rotation", r.max_rotation, first, "1", "max |theta| / alpha");
-    write_measure(grid, "impacts", r.impacts, first, "1", "impacts with approach speed above the threshold");
-    write_measure(grid, "impacts_total", r.impacts_total, first, "1", "impacts, the settling one included",
-                  "the first impact slower than impact_threshold p alpha puts the block at rest "
-                  "(the rest would pile up in finite time); it counts here, not in impacts");
-    write_measure(grid, "t_overturn", r.t_overturn, first, "s", "time at which |theta| reached pi/2",
-                  "NaN when the block did not overturn");
-    write_measure(grid, "peak_force_ratio", r.peak_force_ratio, first, "1", "peak anchorage force / F_u",
-                  "NaN for a free-standing block");
+    write_measure<double>(c, "max_rotation", "1", "max |theta| / alpha");
+    write_measure<std::int32_t>(c, "impacts", "1", "impacts with approach speed above the threshold");
+    write_measure<std::int32_t>(c, "impacts_total", "1", "impacts, the settling one included",
+                                "the first impact slower than impact_threshold p alpha puts the block at rest "
+                                "(the rest would pile up in finite time); it counts here, not in impacts");
+    write_measure<double>(c, "t_overturn", "s", "time at which |theta| reached pi/2", "NaN when the block did not overturn");
+    write_measure<double>(c, "peak_force_ratio", "1", "peak anchorage force / F_u", "NaN for a free-standing block");
     const std::uint8_t masks[] = {broken_left, broken_right};
-    write_code(grid, "broken", r.broken, first, "restrainers broken during the run", "flag_masks", masks,
+    write_code(c, "broken", "restrainers broken during the run", "flag_masks", masks,
                "left_spring_broken right_spring_broken",
                "bit 1: left spring (works for theta > 0); bit 2: right spring (works for theta < 0)");
-    write_measure(grid, "mu_required", r.mu_required, first, "1",
-                  "friction coefficient needed to rock without sliding, max |f_x / f_y|",
-                  "base reactions from the motion of the centre of mass (Eq. 16-18); where it exceeds the "
-                  "interface's static friction coefficient the block would slide and this cell's "
-                  "pure-rocking result does not hold");
+    write_measure<double>(c, "mu_required", "1", "friction coefficient needed to rock without sliding, max |f_x / f_y|",
+                          "base reactions from the motion of the centre of mass (Eq. 16-18); where it exceeds the "
+                          "interface's static friction coefficient the block would slide and this cell's "
+                          "pure-rocking result does not hold");
     const std::uint8_t uplift[] = {0, 1};
-    write_code(grid, "pivot_uplift", r.pivot_uplift, first, "vertical reaction at the pivot went negative",
-               "flag_values", uplift, "pivot_stays_down pivot_lifts",
-               "1: the block would jump; the rocking model does not hold there");
+    write_code(c, "pivot_uplift", "vertical reaction at the pivot went negative", "flag_values", uplift,
+               "pivot_stays_down pivot_lifts", "1: the block would jump; the rocking model does not hold there");
     const std::uint8_t done[] = {0, 1, 2};
-    write_code(grid, "done", r.done, first, "cell computed", "flag_values", done, "pending computed inferred",
+    write_code(c, "done", "cell computed", "flag_values", done, "pending computed inferred",
                "the other datasets are meaningful only where done = 1; done = 2: outcome inferred by "
                "boundary refinement from a uniform square of computed cells (other datasets NaN/0)");
-}
-
-void write_sensitive_column(const GridGroup& grid, const SweepResults& r, std::size_t first) {
+    if (!sensitive) return;
     const std::uint8_t flags[] = {0, 1};
-    write_code(grid, "sensitive", r.sensitive, first, "outcome or damage state changed by a perturbed, tighter rerun",
-               "flag_values", flags, "robust sensitive",
+    write_code(c, "sensitive", "outcome or damage state changed by a perturbed, tighter rerun", "flag_values", flags,
+               "robust sensitive",
                "--check-sensitivity: rerun with the record's scale times (1 + 1e-9) at the tolerance / 100; meaningful "
                "where done = 1 (docs/suite.md, Sensitive runs)");
 }

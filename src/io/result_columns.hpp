@@ -59,14 +59,33 @@ void compare_settings(const std::string& path, const h5::Object& obj, std::span<
 /// A scenario's group: its index, anchorage texts and numbers.
 void write_scenario_attributes(const h5::Group& g, std::size_t index, const Scenario& s);
 
-/// Writes cells [first, first + grid.cell_count()) of every result column as one dataset each.
-void write_result_columns(const GridGroup& grid, const SweepResults& r, std::size_t first);
+/// Creates every result column as an empty dataset over the grid, with its units and meanings,
+/// for a writer to fill: without `chunk` in place (GridGroup::create), with it a slab at a time;
+/// `sensitive` adds the suite's column of that name (--check-sensitivity).
+void write_result_columns(const GridGroup& grid, std::span<const hsize_t> chunk, bool sensitive);
 /// Reads them back into cells [first, ...) of `r`; a dataset of another shape is a mismatch.
 void read_result_columns(const h5::Group& g, std::span<const GridAxis> axes, SweepResults& r, std::size_t first,
                          const Mismatch& mismatch);
 
-/// The suite's `sensitive` flags (--check-sensitivity), written and read like the columns above.
-void write_sensitive_column(const GridGroup& grid, const SweepResults& r, std::size_t first);
+/// Calls f(name, column) for every result column of `r` a stream writes in place, in writing
+/// order: `done` last, so that a cell is marked done only once its values are in the file;
+/// `sensitive` (the suite's --check-sensitivity) only when `sensitive` is set.
+template <class R, class F>
+void for_each_result_column(R& r, bool sensitive, F&& f) {
+    f("outcome", r.outcome);
+    f("max_rotation", r.max_rotation);
+    f("impacts", r.impacts);
+    f("impacts_total", r.impacts_total);
+    f("t_overturn", r.t_overturn);
+    f("peak_force_ratio", r.peak_force_ratio);
+    f("broken", r.broken);
+    f("mu_required", r.mu_required);
+    f("pivot_uplift", r.pivot_uplift);
+    if (sensitive) f("sensitive", r.sensitive);
+    f("done", r.done);
+}
+
+/// The suite's `sensitive` flags (--check-sensitivity), read like the columns above.
 void read_sensitive_column(const h5::Group& g, std::span<const GridAxis> axes, SweepResults& r, std::size_t first,
                            const Mismatch& mismatch);
 

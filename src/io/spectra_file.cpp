@@ -60,26 +60,15 @@ void check_scenario_names(const SweepSpec& spec) {
 // One scenario's block of a column (the columns hold the scenarios one after the other) as a
 // dataset; without a column, the dataset the streaming writer fills in place (spectra_stream.cpp).
 template <h5::Element T>
-h5::Dataset write_column(const GridGroup& grid, const char* name, const std::vector<T>* column, std::size_t scenario,
-                         const h5::Group& g, std::span<const GridAxis> axes) {
+h5::Dataset write_column(const GridGroup& grid, const char* name, const std::vector<T>* column, std::size_t scenario) {
     const std::size_t cells = grid.cell_count();
     if (column) return grid.write<T>(name, std::span<const T>(column->data() + scenario * cells, cells));
-    const std::vector<hsize_t> dims = grid_dims(axes);
-    h5::Dataset ds = h5::create_fixed_dataset<T>(g, name, dims);
-    std::string names;
-    for (unsigned d = 0; d < axes.size(); ++d) {
-        h5::attach_scale(ds, g.open_dataset(axes[d].name), d);
-        names += (names.empty() ? "" : ", ") + axes[d].name;
-    }
-    h5::write_attribute(ds, "dimensions", names);
-    return ds;
+    return grid.create<T>(name);
 }
 
 // Where the columns come from: a SweepResults, or nothing (fixed datasets to fill in place).
 struct Columns {
     const SweepResults* r;
-    const h5::Group& g;
-    std::span<const GridAxis> axes;
     template <class T>
     const std::vector<T>* operator()(std::vector<T> SweepResults::*m) const { return r ? &(r->*m) : nullptr; }
 };
@@ -111,8 +100,8 @@ void write_root(const h5::File& f, const SweepSpec& spec, const IntegratorSettin
 /// A measured quantity: the grid with its units, long_name and, where there is one, comment.
 template <h5::Element T>
 void write_measure(const GridGroup& grid, const char* name, const std::vector<T>* column, std::size_t index,
-                   const Columns& from, const char* units, const char* long_name, const char* comment = nullptr) {
-    const h5::Dataset ds = write_column(grid, name, column, index, from.g, from.axes);
+                   const char* units, const char* long_name, const char* comment = nullptr) {
+    const h5::Dataset ds = write_column(grid, name, column, index);
     h5::write_attribute(ds, "units", units);
     h5::write_attribute(ds, "long_name", long_name);
     if (comment) h5::write_attribute(ds, "comment", comment);
@@ -121,9 +110,9 @@ void write_measure(const GridGroup& grid, const char* name, const std::vector<T>
 /// A code: the grid with its long_name and the CF flag attributes (flag_values or flag_masks,
 /// flag_meanings), and a comment where there is one.
 void write_code(const GridGroup& grid, const char* name, const std::vector<std::uint8_t>* column,
-                std::size_t index, const Columns& from, const char* long_name, const char* flag_kind,
+                std::size_t index, const char* long_name, const char* flag_kind,
                 std::span<const std::uint8_t> flags, const char* meanings, const char* comment = nullptr) {
-    const h5::Dataset ds = write_column(grid, name, column, index, from.g, from.axes);
+    const h5::Dataset ds = write_column(grid, name, column, index);
     h5::write_attribute(ds, "long_name", long_name);
     h5::write_attribute(ds, flag_kind, flags);
     h5::write_attribute(ds, "flag_meanings", meanings);
@@ -141,38 +130,38 @@ void write_scenario(const h5::Group& spectra, std::size_t index, const SweepSpec
     for (const NamedText& t : scenario_texts(s)) h5::write_attribute(g, t.name, t.value);
     for (const NamedNumber& n : scenario_numbers(s)) h5::write_attribute(g, n.name, n.value);
     const GridGroup grid(g, axes);
-    const Columns c{r, g, axes};
+    const Columns c{r};
 
     const std::uint8_t outcomes[] = {0, 1, 2, 255};
-    write_code(grid, "outcome", c(&SweepResults::outcome), index, c, "outcome of the pulse", "flag_values", outcomes,
+    write_code(grid, "outcome", c(&SweepResults::outcome), index, "outcome of the pulse", "flag_values", outcomes,
                "safe overturned_with_impact overturned_without_impact not_converged");
-    write_measure(grid, "max_rotation", c(&SweepResults::max_rotation), index, c, "1", "max |theta| / alpha");
-    write_measure(grid, "impacts", c(&SweepResults::impacts), index, c, "1", "impacts with approach speed above the threshold");
-    write_measure(grid, "impacts_total", c(&SweepResults::impacts_total), index, c, "1",
+    write_measure(grid, "max_rotation", c(&SweepResults::max_rotation), index, "1", "max |theta| / alpha");
+    write_measure(grid, "impacts", c(&SweepResults::impacts), index, "1", "impacts with approach speed above the threshold");
+    write_measure(grid, "impacts_total", c(&SweepResults::impacts_total), index, "1",
                   "impacts, the settling one included",
                   "the first impact slower than impact_threshold p alpha puts the block at rest "
                   "(the rest would pile up in finite time); it counts here, not in impacts");
-    write_measure(grid, "t_overturn", c(&SweepResults::t_overturn), index, c, "s",
+    write_measure(grid, "t_overturn", c(&SweepResults::t_overturn), index, "s",
                   "time at which |theta| reached pi/2",
                   "NaN when the block did not overturn");
-    write_measure(grid, "peak_force_ratio", c(&SweepResults::peak_force_ratio), index, c, "1",
+    write_measure(grid, "peak_force_ratio", c(&SweepResults::peak_force_ratio), index, "1",
                   "peak anchorage force / F_u",
                   "NaN for a free-standing block");
     const std::uint8_t masks[] = {broken_left, broken_right};
-    write_code(grid, "broken", c(&SweepResults::broken), index, c, "restrainers broken during the run", "flag_masks", masks,
+    write_code(grid, "broken", c(&SweepResults::broken), index, "restrainers broken during the run", "flag_masks", masks,
                "left_spring_broken right_spring_broken",
                "bit 1: left spring (works for theta > 0); bit 2: right spring (works for theta < 0)");
-    write_measure(grid, "mu_required", c(&SweepResults::mu_required), index, c, "1",
+    write_measure(grid, "mu_required", c(&SweepResults::mu_required), index, "1",
                   "friction coefficient needed to rock without sliding, max |f_x / f_y|",
                   "base reactions from the motion of the centre of mass (Eq. 16-18); where it exceeds the "
                   "interface's static friction coefficient the block would slide and this cell's "
                   "pure-rocking result does not hold");
     const std::uint8_t uplift[] = {0, 1};
-    write_code(grid, "pivot_uplift", c(&SweepResults::pivot_uplift), index, c, "vertical reaction at the pivot went negative",
+    write_code(grid, "pivot_uplift", c(&SweepResults::pivot_uplift), index, "vertical reaction at the pivot went negative",
                "flag_values", uplift, "pivot_stays_down pivot_lifts",
                "1: the block would jump; the rocking model does not hold there");
     const std::uint8_t done[] = {0, 1, 2};
-    write_code(grid, "done", c(&SweepResults::done), index, c, "cell computed", "flag_values", done, "pending computed inferred",
+    write_code(grid, "done", c(&SweepResults::done), index, "cell computed", "flag_values", done, "pending computed inferred",
                "the other datasets are meaningful only where done = 1; done = 2: outcome inferred by "
                "boundary refinement from a uniform square of computed cells (other datasets NaN/0)");
 }

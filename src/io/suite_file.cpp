@@ -6,12 +6,15 @@
 #include <set>
 
 #include "result_columns.hpp"
+#include "suite_layout.hpp"
 #include "rocksweep/core/errors.hpp"
 #include "rocksweep/io/grid_layout.hpp"
 #include "rocksweep/io/hdf5.hpp"
 #include "rocksweep/motion/response_spectrum.hpp"
 
 namespace rocksweep {
+
+using suite_detail::write_measure_on;
 
 namespace {
 
@@ -37,13 +40,6 @@ std::string record_names(const SuiteSpec& spec) {
     std::string names;
     for (const SuiteMember& m : spec.records) names += (names.empty() ? "" : " ") + m.entry.name;
     return names;
-}
-
-void write_measure_on(const GridGroup& grid, const char* name, const std::vector<double>& v,
-                      std::initializer_list<std::string_view> axes, const char* units, const char* long_name) {
-    const h5::Dataset ds = grid.write_on<double>(name, v, axes);
-    h5::write_attribute(ds, "units", units);
-    h5::write_attribute(ds, "long_name", long_name);
 }
 
 // The shortest text that reads back as the same double: a resume compares it exactly.
@@ -179,95 +175,23 @@ void write_records(const h5::File& f, const SuiteSpec& spec) {
     }
 }
 
-void write_overturning(const h5::Group& scenario, const SuiteSpec& spec, const OverturningSpectrum& o) {
-    const h5::Group g = scenario.create_group("overturning");
-    const GridAxis axes[] = {record_axis(spec), alpha_axis(spec), radius_axis(spec)};
-    const GridGroup grid(g, axes);
-    const char* units = intensity_units(spec.measure);
-    write_measure_on(grid, "first_intensity", o.first_intensity, {"record", "alpha_rad", "radius_m"}, units,
-                     "lowest intensity level that overturns the block (NaN: none does)");
-    write_measure_on(grid, "first_pga_g", o.first_pga_g, {"record", "alpha_rad", "radius_m"}, "1",
-                     "PGA / standard gravity of the record at that level");
-    write_measure_on(grid, "below_intensity", o.below_intensity, {"record", "alpha_rad", "radius_m"}, units,
-                     "the level before it, which does not overturn the block (NaN: none)");
-    const h5::Dataset ds = grid.write<std::uint8_t>("safe_above", o.safe_above);
-    const std::uint8_t flags[] = {0, 1};
-    h5::write_attribute(ds, "long_name", "a level above the first overturning one leaves the block standing");
-    h5::write_attribute(ds, "flag_values", std::span<const std::uint8_t>(flags));
-    h5::write_attribute(ds, "flag_meanings", "overturns_at_every_higher_level stands_at_some_higher_level");
+}  // namespace
+
+void suite_detail::write_measure_on(const GridGroup& grid, const char* name, const std::vector<double>& v,
+                      std::initializer_list<std::string_view> axes, const char* units, const char* long_name) {
+    const h5::Dataset ds = grid.write_on<double>(name, v, axes);
+    h5::write_attribute(ds, "units", units);
+    h5::write_attribute(ds, "long_name", long_name);
 }
 
-void write_fragility(const h5::Group& scenario, const SuiteSpec& spec, const SuiteFragility& fr) {
-    const h5::Group g = scenario.create_group("fragility");
-    std::vector<double> index, ratios;
-    std::string meanings;
-    for (std::size_t d = 0; d < fr.states.size(); ++d) {
-        index.push_back(static_cast<double>(d));
-        ratios.push_back(fr.states[d].overturning ? NAN : fr.states[d].rotation_ratio);
-        meanings += (meanings.empty() ? "" : " ") + fr.states[d].name();
-    }
-    const GridAxis axes[] = {{"damage_state", "1", "damage state (names: its flag_meanings)", index}, alpha_axis(spec),
-                             radius_axis(spec), intensity_axis(spec)};
-    const GridGroup grid(g, axes);
-    const h5::Dataset state = g.open_dataset("damage_state");
-    h5::write_attribute(state, "flag_values", std::span<const double>(index));
-    h5::write_attribute(state, "flag_meanings", meanings);
-    h5::write_attribute(state, "rotation_ratios", std::span<const double>(ratios));
-
-    std::vector<double> fraction(fr.exceed.size()), lo(fr.exceed.size()), hi(fr.exceed.size());
-    for (std::size_t k = 0; k < fr.exceed.size(); ++k) {
-        if (fr.total[k] == 0) {
-            fraction[k] = lo[k] = hi[k] = NAN;
-            continue;
-        }
-        const Stripe s{1.0, fr.exceed[k], fr.total[k]};
-        fraction[k] = s.fraction();
-        wilson_interval(s, lo[k], hi[k]);
-    }
-    const h5::Dataset f = grid.write<double>("fraction", fraction);
-    h5::write_attribute(f, "units", "1");
-    h5::write_attribute(f, "long_name", "fraction of the records that reach the damage state (empirical)");
-    h5::write_attribute(grid.write<double>("fraction_lo", lo), "long_name", "Wilson 95 % interval of fraction: low end");
-    h5::write_attribute(grid.write<double>("fraction_hi", hi), "long_name", "Wilson 95 % interval of fraction: high end");
-    h5::write_attribute(grid.write<std::int32_t>("exceed", fr.exceed), "long_name", "records that reach the damage state");
-    h5::write_attribute(grid.write<std::int32_t>("total", fr.total), "long_name", "records whose run converged");
-
-    struct FitColumn {
-        const char* name;
-        double (*get)(const FragilityFit&);
-        const char* units;
-        const char* long_name;
-    };
-    const char* units = intensity_units(spec.measure);
-    const FitColumn columns[] = {
-        // Not `median`: xarray's Dataset.median() would hide a variable of that name (fr.median).
-        {"median_intensity", [](const FragilityFit& x) { return x.curve.median; }, units, "lognormal fit: median intensity"},
-        {"beta", [](const FragilityFit& x) { return x.curve.beta; }, "1", "lognormal fit: dispersion (log standard deviation)"},
-        {"median_intensity_lo", [](const FragilityFit& x) { return x.median_lo; }, units, "95 % interval of the median: low end"},
-        {"median_intensity_hi", [](const FragilityFit& x) { return x.median_hi; }, units, "95 % interval of the median: high end"},
-        {"beta_lo", [](const FragilityFit& x) { return x.beta_lo; }, "1", "95 % interval of beta: low end"},
-        {"beta_hi", [](const FragilityFit& x) { return x.beta_hi; }, "1", "95 % interval of beta: high end"},
-        {"se_ln_median", [](const FragilityFit& x) { return x.se_ln_median; }, "1", "standard error of ln(median)"},
-        {"se_beta", [](const FragilityFit& x) { return x.se_beta; }, "1", "standard error of beta"},
-    };
-    for (const FitColumn& c : columns) {
-        std::vector<double> v;
-        for (const FragilityFit& fit : fr.fits) v.push_back(c.get(fit));
-        write_measure_on(grid, c.name, v, {"damage_state", "alpha_rad", "radius_m"}, c.units, c.long_name);
-    }
-    if (spec.sensitivity.on) {
-        const h5::Dataset ds = grid.write_on<std::int32_t>("sensitive_runs", fr.sensitive, {"damage_state", "alpha_rad", "radius_m"});
-        h5::write_attribute(ds, "units", "1");
-        h5::write_attribute(ds, "long_name", "runs of the fit (converged) flagged sensitive");
-    }
-    std::vector<std::uint8_t> status;
-    for (const FragilityFit& fit : fr.fits) status.push_back(static_cast<std::uint8_t>(fit.status));
-    const h5::Dataset ds = grid.write_on<std::uint8_t>("fit_status", status, {"damage_state", "alpha_rad", "radius_m"});
-    io::write_fit_status_flags(ds, "how the lognormal fit ended (docs/fragility.md)");
+std::vector<GridAxis> suite_detail::result_axes(const SuiteSpec& spec) {
+    return {record_axis(spec), alpha_axis(spec), radius_axis(spec), intensity_axis(spec)};
 }
 
-void write_contents(const h5::File& f, const SuiteSpec& spec, const SweepResults& r, const std::vector<DamageState>& states,
-                    const Provenance& prov, const IntegratorSettings& settings) {
+void suite_detail::write_contents(const h5::File& f, const SuiteSpec& spec, bool finished,
+                                  std::span<const hsize_t> chunk, std::size_t n_done, const Provenance& prov, const IntegratorSettings& settings,
+                                  const CheckpointStats& saves) {
+    check_record_names(spec);
     h5::write_attribute(f, "title", "rocksweep record-suite sweep");
     h5::write_attribute(f, "Conventions", h5::cf_conventions);
     h5::write_attribute(f, "format_version", format_version);
@@ -283,29 +207,33 @@ void write_contents(const h5::File& f, const SuiteSpec& spec, const SweepResults
     // Synthetic motions are not stored: what makes them is (docs/synthetic.md).
     if (spec.motions) h5::write_attribute(f, "synthetic_motions", spec.motions->describe());
     h5::write_attribute(f, "rocksweep_version", prov.version);
-    io::write_progress(f, r);
+    // `complete`: every cell done and the products written (a streaming file, even with every
+    // cell done, has none yet: docs/streaming.md).
+    h5::write_attribute(f, "n_cells", static_cast<std::int64_t>(spec.cell_count()));
+    h5::write_attribute(f, "n_done", static_cast<std::int64_t>(n_done));
+    h5::write_attribute(f, "complete", std::int64_t{finished && n_done == spec.cell_count() ? 1 : 0});
     write_records(f, spec);
     write_floors(f, spec);
 
-    const bool complete = r.done_count() == r.size();
-    const GridAxis axes[] = {record_axis(spec), alpha_axis(spec), radius_axis(spec), intensity_axis(spec)};
+    const std::vector<GridAxis> axes = result_axes(spec);
     const h5::Group suite = f.create_group("suite");
     for (std::size_t s = 0; s < spec.scenarios.size(); ++s) {
         const h5::Group g = suite.create_group(spec.scenarios[s].name);
         io::write_scenario_attributes(g, s, spec.scenarios[s]);
         h5::write_attribute(g, "floor", spec.floors[spec.floor_of(s)].name);
         const GridGroup grid(g, axes);
-        io::write_result_columns(grid, r, s * spec.cells_per_scenario());
-        if (spec.sensitivity.on) io::write_sensitive_column(grid, r, s * spec.cells_per_scenario());
-        if (!complete) continue;
-        write_overturning(g, spec, overturning_spectrum(spec, r, s));
-        write_fragility(g, spec, suite_fragility(spec, r, s, states));
+        io::write_result_columns(grid, chunk, spec.sensitivity.on);
     }
-    io::write_provenance(f, prov, settings);
+    const h5::Group g = io::write_provenance(f, prov, settings);
+    // What saving cost the run (a streaming file's are updated in place when it stops).
+    h5::write_attribute(g, "checkpoint_s", saves.seconds);
+    h5::write_attribute(g, "checkpoints", static_cast<std::int64_t>(saves.checkpoints));
 }
 
-SweepResults read_contents(const std::string& path, const h5::File& f, const SuiteSpec& spec,
-                           const IntegratorSettings& settings) {
+namespace {
+
+void read_contents(const std::string& path, const h5::File& f, const SuiteSpec& spec, const IntegratorSettings& settings,
+                   SweepResults* r) {
     const io::Mismatch mismatch = [&](const std::string& what) {
         throw InputError("suite file", path, "a file written for the same suite sweep (" + what + ")");
     };
@@ -327,9 +255,9 @@ SweepResults read_contents(const std::string& path, const h5::File& f, const Sui
     for (const Scenario& s : spec.scenarios) expected.push_back(s.name);
     std::sort(expected.begin(), expected.end());
     if (suite.children() != expected) mismatch("its scenarios differ from the config's");
-    const GridAxis axes[] = {record_axis(spec), alpha_axis(spec), radius_axis(spec), intensity_axis(spec)};
-    SweepResults r;
-    r.resize(spec.cell_count());
+    const std::vector<GridAxis> axes = suite_detail::result_axes(spec);
+    const std::vector<hsize_t> dims = grid_dims(axes);
+    if (r) r->resize(spec.cell_count());
     for (std::size_t s = 0; s < spec.scenarios.size(); ++s) {
         const h5::Group g = suite.open_group(spec.scenarios[s].name);
         io::compare_texts(g, io::scenario_texts(spec.scenarios[s]), mismatch);
@@ -337,10 +265,17 @@ SweepResults read_contents(const std::string& path, const h5::File& f, const Sui
         io::compare_texts(g, floor, mismatch);
         io::compare_numbers(g, io::scenario_numbers(spec.scenarios[s]), mismatch);
         if (const std::string diff = axes_difference(g, axes); !diff.empty()) mismatch(g.name() + ": " + diff);
-        io::read_result_columns(g, axes, r, s * spec.cells_per_scenario(), mismatch);
-        if (spec.sensitivity.on) io::read_sensitive_column(g, axes, r, s * spec.cells_per_scenario(), mismatch);
+        if (r) {
+            io::read_result_columns(g, axes, *r, s * spec.cells_per_scenario(), mismatch);
+            if (spec.sensitivity.on) io::read_sensitive_column(g, axes, *r, s * spec.cells_per_scenario(), mismatch);
+            continue;
+        }
+        SweepResults none;  // the shapes alone, without reading the results
+        io::for_each_result_column(none, spec.sensitivity.on, [&](const char* name, auto&) {
+            if (const std::vector<hsize_t> in_file = g.open_dataset(name).dims(); in_file != dims)
+                mismatch(g.name() + "/" + name + " is " + dims_text(in_file) + ", the config needs " + dims_text(dims));
+        });
     }
-    return r;
 }
 
 }  // namespace
@@ -360,16 +295,8 @@ void check_record_names(const SuiteSpec& spec) {
     }
 }
 
-void write_suite(const std::string& path, const SuiteSpec& spec, const SweepResults& r,
-                 const std::vector<DamageState>& states, const Provenance& prov, const IntegratorSettings& settings) {
-    if (r.size() != spec.cell_count())
-        throw std::invalid_argument("write_suite: " + std::to_string(r.size()) + " results for " +
-                                    std::to_string(spec.cell_count()) + " cells");
-    check_record_names(spec);
-    h5::publish_h5_atomically(path, [&](const h5::File& f) { write_contents(f, spec, r, states, prov, settings); });
-}
-
-SweepResults read_suite_results(const std::string& path, const SuiteSpec& spec, const IntegratorSettings& settings) {
+h5::File suite_detail::open_checked(const std::string& path, const SuiteSpec& spec, const IntegratorSettings& settings,
+                                   SweepResults* r) {
     auto not_suite = [&](const std::string& what) {
         return InputError("output", path, "a rocksweep suite file to resume; it is " + what);
     };
@@ -385,10 +312,21 @@ SweepResults read_suite_results(const std::string& path, const SuiteSpec& spec, 
     if (const std::int64_t v = h5::read_int64_attribute(f, "format_version"); v != format_version)
         throw not_suite("of format version " + std::to_string(v) + ", which this rocksweep does not continue");
     try {
-        return read_contents(path, f, spec, settings);
+        read_contents(path, f, spec, settings, r);
     } catch (const Hdf5Error& e) {
         throw InputError("suite file", path, std::string("a rocksweep suite file (") + e.what() + ")");
     }
+    return std::move(*opened);
+}
+
+SweepResults read_suite_results(const std::string& path, const SuiteSpec& spec, const IntegratorSettings& settings) {
+    SweepResults r;
+    suite_detail::open_checked(path, spec, settings, &r).close();
+    return r;
+}
+
+void check_suite_file(const std::string& path, const SuiteSpec& spec, const IntegratorSettings& settings) {
+    suite_detail::open_checked(path, spec, settings, nullptr).close();
 }
 
 }  // namespace rocksweep

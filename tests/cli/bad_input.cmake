@@ -127,6 +127,10 @@ bad_input(range_with_three_values "--omega-ratio-range is invalid: 3 values give
 # Memory: estimated and refused before anything is allocated.
 bad_input(grid_beyond_memory "--omega-ratio-points = 100000 is invalid: .* 7e10 cells would need about 3.15 TB, more than half of this machine's"
           sweep --config ${CFG} -o ${OUT} --omega-ratio-points 100000 --amplitude-ratio-points 100000)
+# A suite's rank 0 holds one scenario's products at the end, whatever the number of runs.
+bad_input(suite_products_beyond_memory "--radius-points = 100000 is invalid: the products \\(overturning spectra, fragility\\) of 1e10 block sizes and slendernesses would need about [0-9.]+ TB"
+          suite --config ${CFG} -o ${OUT} --suite ${PROJECT_SOURCE_DIR}/configs/records_suite.csv --radius-range 0.5 3
+          --radius-points 100000 --alpha-range 0.15 0.25 --alpha-points 100000)
 bad_input(history_beyond_memory "--output-dt = 1e-5 is invalid: with --t-end 1000000 s, a history of 1e11 samples would need about [0-9.]+ TB"
           simulate -o ${OUT} --t-end 1e6 --output-dt 1e-5)
 

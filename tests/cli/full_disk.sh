@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# full_disk.sh ROCKSWEEP CONFIG DIR [NP]: a save that runs out of space ends with one line
-# naming the file and "no space left on device", exit status 1 (no crash), no .tmp, and the
-# last complete file intact.
+# full_disk.sh ROCKSWEEP CONFIG DIR [NP]: a save that runs out of space (sweep, simulate, suite)
+# ends with one line naming the file and "no space left on device", exit status 1 (no crash),
+# no .tmp, and the last complete file intact.
 #
 # The disk is a 160 KiB tmpfs mounted in a private mount namespace (unshare --mount): it exists
 # only for the commands inside it and vanishes with them, so nothing is left mounted even if
@@ -54,4 +54,23 @@ for ext in h5 csv; do
   [ ! -e "$dir/h.$ext" ] && [ ! -e "$dir/h.$ext.tmp" ] || fail "simulate left files"
   rm -f "$dir/filler"
 done
+# 4. suite: the disk fills while the finished file is written beside the running one (every run
+# done): one line, no .tmp, the running file intact with every run, and --resume finishes it.
+rm -f "$out"  # the sweep of 2
+record="$(cd "$(dirname "$0")/../data" && pwd)/loma_prieta_1989.dat"
+printf 'name,file,format,units\nloma,%s,time_accel,m/s^2\n' "$record" > "$dir/one.csv"
+suite=(suite --config "$cfg" --suite "$dir/one.csv" --anchorages free --intensity-points 4 --quiet)
+"${run[@]}" "${suite[@]}" -o "$dir/s.h5" || fail "a small suite should fit"
+size=$(stat -c %s "$dir/s.h5"); rm -f "$dir/s.h5"
+head -c $((160 * 1024 - size * 3 / 2)) /dev/zero > "$dir/filler"  # room for one file, not two
+err=$("${run[@]}" "${suite[@]}" -o "$dir/s.h5" 2>&1 >/dev/null); status=$?
+echo "$err"
+[ "$status" -eq 1 ] || fail "suite: exit status $status, expected 1"
+grep -Eq "^rocksweep: error: cannot write $dir/s.h5: no space left on device \($dir/s.h5 still holds the previous save\)$" \
+  <<<"$err" || fail "suite message"
+[ ! -e "$dir/s.h5.tmp" ] || fail "suite: s.h5.tmp left"
+h5dump -a /n_done "$dir/s.h5" | grep -q "(0): 4$" || fail "suite: the running file does not hold every run"
+rm -f "$dir/filler"
+"${run[@]}" "${suite[@]}" -o "$dir/s.h5" --resume || fail "suite: resume after the full disk"
+h5dump -a /complete "$dir/s.h5" | grep -q "(0): 1$" || fail "suite: not finished by --resume"
 echo ok

@@ -234,6 +234,38 @@ TEST(SuiteProducts, FragilityStripesCountTheRecordsAndLeaveOutUnconvergedRuns) {
     EXPECT_GT(f.fits[1].curve.median, spec.intensity.at(1));
 }
 
+// Every record at every level: the fit's errors are the records' (docs/fragility.md, "Records
+// as clusters"). 200 records whose capacities are lognormal quantiles (median 1.5, beta 0.5) at
+// 30 levels 0.1..3: se(ln median) near beta / sqrt(200) = 0.035, what one capacity per record
+// gives, and not the run-counting error of the same stripes, several times smaller.
+TEST(SuiteProducts, FragilityErrorsAreThoseOfTheRecordsNotOfTheRuns) {
+    const std::size_t n = 200, levels = 30;
+    const SuiteSpec spec = synthetic(n, levels);
+    SweepResults r;
+    r.resize(spec.cell_count());
+    for (std::size_t rec = 0; rec < n; ++rec) {
+        // Phi^-1 of (rec + 0.5) / n by bisection: the standard library has erfc, not its inverse.
+        double lo = -10, hi = 10;
+        for (int k = 0; k < 200; ++k) ((normal_cdf(0.5 * (lo + hi)) < (rec + 0.5) / n) ? lo : hi) = 0.5 * (lo + hi);
+        const double capacity = 1.5 * std::exp(0.5 * lo);
+        for (std::size_t l = 0; l < levels; ++l) {
+            const bool falls = spec.intensity.at(l) >= capacity;
+            r.store(rec * levels + l, CellResult{falls ? 9.0 : 0.1, NAN, NAN, 0, 0, 0, 0,
+                                                 falls ? Outcome::overturned_impact : Outcome::safe});
+        }
+    }
+    const SuiteFragility f = suite_fragility(spec, r, 0, {{0.0, true}});
+    ASSERT_EQ(f.fits.size(), 1u);
+    const FragilityFit& fit = f.fits[0];
+    ASSERT_EQ(fit.status, FitStatus::ok);
+    EXPECT_NEAR(std::log(fit.curve.median), std::log(1.5), 0.05);
+    EXPECT_NEAR(fit.se_ln_median / (0.5 / std::sqrt(200.0)), 1.0, 0.25) << fit.se_ln_median;
+    std::vector<Stripe> stripes;
+    for (std::size_t l = 0; l < levels; ++l) stripes.push_back({spec.intensity.at(l), f.exceed[l], f.total[l]});
+    EXPECT_GT(fit.se_ln_median, 2.0 * fit_stripes(stripes).se_ln_median);
+    EXPECT_LT(fit.median_lo, fit.curve.median * std::exp(-1.9 * fit.se_ln_median));  // the intervals follow
+}
+
 TEST(SuiteSweep, EveryScenarioStandsOnEveryFloorAndACellReadsItsFloorsMotion) {
     const SuiteSpec ground = shipped(IntensityMeasure::pga_g);
     EXPECT_EQ(ground.scenarios[0].name, "free");  // the ground alone: names as before floors

@@ -55,13 +55,16 @@ OutputVerdict agree_on_output(const MpiSession& mpi, std::ostream& log, const st
 /// The scheduler's side of a computation of cells: `compute(first, count, out)` fills `count`
 /// CellResults; an integration interrupted by a stop request gives its chunk up (ChunkAbandoned).
 ComputeFn cell_results_compute(std::function<void(std::size_t first, std::size_t count, CellResult* out)> compute);
-/// Stores each finished chunk in `results` (rank 0) and adds its cells to `done`.
-SinkFn cell_results_sink(SweepResults& results, std::size_t& done);
 
 /// Now as ISO 8601 UTC, e.g. 2026-11-24T00:15:07Z.
 std::string utc_now();
 
 /// The runs of cells whose `done` entry is 0, in index order.
 std::vector<IndexRange> missing_ranges(const std::vector<std::uint8_t>& done);
+/// `read_done(first, count, out)`: the done bytes of cells [first, first + count) of a file.
+using DoneReader = std::function<void(std::size_t first, std::size_t count, std::uint8_t* out)>;
+/// The runs of cells [0, total) whose done byte is 0, read a block of 16 M cells at a time
+/// (1 byte per cell of the block, not of the grid).
+std::vector<IndexRange> missing_cells(std::size_t total, const DoneReader& read_done);
 
 }  // namespace rocksweep

@@ -49,7 +49,15 @@ public:
     h5::Dataset write_on(std::string_view name, std::span<const T> values,
                          std::initializer_list<std::string_view> axis_names) const;
 
+    /// An empty dataset over every axis, attached and described like write()'s, for a writer to
+    /// fill: without `chunk`, contiguous and allocated but never filled (h5::create_fixed_dataset,
+    /// filled in place); with it, chunked so, shuffled and deflated (h5::create_chunked_dataset,
+    /// filled by h5::write_rows). Throws Hdf5Error.
+    template <h5::Element T>
+    h5::Dataset create(std::string_view name, std::span<const hsize_t> chunk = {}) const;
+
 private:
+    void attach(const h5::Dataset& ds, const std::vector<std::size_t>& which) const;
     template <h5::Element T>
     h5::Dataset write_axes(std::string_view name, std::span<const T> values, const std::vector<std::size_t>& which) const;
 

@@ -233,6 +233,18 @@ Dataset write_2d(const Location& where, std::string_view name, std::span<const T
     return write_dataset<T>(where, name, data, dims);
 }
 
+/// Creates an empty dataset `name` of shape `dims`, chunked by `chunk` (one entry per dimension)
+/// with shuffle + deflate level 4, for write_rows to fill a slab at a time: a writer that never
+/// holds the whole array. Throws Hdf5Error.
+template <Element T>
+Dataset create_chunked_dataset(const Location& where, std::string_view name, std::span<const hsize_t> dims,
+                               std::span<const hsize_t> chunk);
+
+/// Writes rows [first, first + rows) of the slowest dimension of `ds` from `data` (C order,
+/// rows times the other dimensions' sizes; else std::invalid_argument). Throws Hdf5Error.
+template <Element T>
+void write_rows(const Dataset& ds, hsize_t first, hsize_t rows, std::span<const T> data);
+
 /// A 2-D array read back, C order: values[i * cols + j].
 template <class T>
 struct Array2 {

@@ -11,26 +11,14 @@
 /// run. (docs/streaming.md says why this was chosen over a journal, SWMR and parallel HDF5.)
 #include <cstddef>
 #include <cstdint>
-#include <memory>
 #include <string>
 #include <string_view>
-#include <vector>
 
 #include "rocksweep/grid/sweep.hpp"
+#include "rocksweep/io/result_stream.hpp"
 #include "rocksweep/io/spectra_file.hpp"
 
-namespace rocksweep::h5 {
-class File;
-}
-
 namespace rocksweep {
-
-/// What the checkpoints of a run cost, for the log line and /provenance.
-struct CheckpointStats {
-    std::size_t checkpoints = 0;
-    double seconds = 0.0;       ///< wall time spent writing and syncing
-    std::uint64_t cells = 0;    ///< cells written
-};
 
 class SpectraStream {
 public:
@@ -44,17 +32,19 @@ public:
     /// ...") when the file cannot be written (e.g. a full disk: nothing is left behind).
     SpectraStream(std::string path, const SweepSpec& spec, const IntegratorSettings& settings, Provenance prov,
                   bool resume);
-    ~SpectraStream();  ///< removes path + ".tmp" if no checkpoint published it
+    // Its ResultStream removes path + ".tmp" if no checkpoint published it.
     SpectraStream(const SpectraStream&) = delete;
     SpectraStream& operator=(const SpectraStream&) = delete;
 
     /// Cells done (computed or inferred): in the file, plus those added since.
-    std::size_t done_count() const { return done_count_; }
+    std::size_t done_count() const { return cells_.done_count(); }
     /// Result dataset `name` (e.g. "done", "mu_required") of cells [first, first + count), as
     /// the file holds it (cells added since the last checkpoint read 0), into `out`, an array
     /// of the dataset's element type (docs/hdf5.md). Throws std::invalid_argument for an unknown
     /// name, std::runtime_error on a read error.
-    void read_column(std::string_view name, std::size_t first, std::size_t count, void* out) const;
+    void read_column(std::string_view name, std::size_t first, std::size_t count, void* out) const {
+        cells_.read_column(name, first, count, out);
+    }
     /// `outcome` and `done` of `count` cells of one scenario from its cell `first`, as the file
     /// holds them (refinement reads one spectrum, a plane of the grid, at a time).
     void read_outcomes(std::size_t scenario, std::size_t first, std::size_t count, std::uint8_t* outcome,
@@ -62,9 +52,9 @@ public:
 
     /// Takes finished cells [first, first + count) (any order, each cell once) until the next
     /// checkpoint.
-    void add(std::size_t first, std::size_t count, const CellResult* cells);
+    void add(std::size_t first, std::size_t count, const CellResult* cells) { cells_.add(first, count, cells); }
     /// Bytes held for the next checkpoint.
-    std::size_t pending_bytes() const { return pending_cells_.size() * (sizeof(CellResult) + sizeof(std::size_t)); }
+    std::size_t pending_bytes() const { return cells_.pending_bytes(); }
     /// Of the `count` cells of `scenario` from its cell `first`, marks those whose `done_after` is
     /// cell_inferred and `done_before` is not as inferred, with `outcome` (the other columns take
     /// the empty values NaN / 0), and writes them now.
@@ -73,41 +63,20 @@ public:
 
     /// Writes the cells added since the last checkpoint and syncs them, then the root attribute
     /// n_done; the first one also publishes the file under `path`. Throws std::runtime_error("cannot write PATH: ...").
-    void checkpoint();
+    void checkpoint() { cells_.checkpoint(); }
     /// A last checkpoint, then the root attributes n_done and complete, /provenance (wall_s,
     /// ranks, checkpoint cost) and each scenario's checksum of its results (results_checksum.hpp).
     /// Throws like checkpoint().
     void finish(double wall_s);
 
-    const CheckpointStats& stats() const { return stats_; }
-    const std::string& path() const { return path_; }
+    const CheckpointStats& stats() const { return cells_.stats(); }
+    const std::string& path() const { return cells_.path(); }
 
 private:
-    struct Placement;  // where one dataset's bytes are
-    class Descriptor;  // the open file, for pread/pwrite
-    struct Run;        // cells of one scenario, contiguous
-
-    void create_skeleton(const SweepResults* whole);
-    void locate(const std::string& file);
-    void write_runs(const SweepResults& cells, const std::vector<Run>& runs);
-    void publish();
-    void count_done();
-    void update_counts(bool final, const double* wall_s);
-    void forget_checksums();
-    void store_checksums(const h5::File& f);
-
-    std::string path_;
     const SweepSpec& spec_;
     const IntegratorSettings& settings_;
     Provenance prov_;
-    std::vector<std::vector<Placement>> place_;  // [scenario][column]
-    std::unique_ptr<Descriptor> fd_;
-    bool published_ = false;
-    bool checksums_forgotten_ = false;  // the file's checksums are 0 until finish() stores them
-    std::size_t done_count_ = 0;
-    std::vector<std::size_t> pending_index_;
-    std::vector<CellResult> pending_cells_;
-    CheckpointStats stats_;
+    ResultStream cells_;
 };
 
 }  // namespace rocksweep

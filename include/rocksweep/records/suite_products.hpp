@@ -9,6 +9,7 @@
 
 #include "rocksweep/grid/sweep.hpp"
 #include "rocksweep/records/fragility.hpp"
+#include "rocksweep/records/stripe_clusters.hpp"
 #include "rocksweep/records/suite_sweep.hpp"
 
 namespace rocksweep {
@@ -39,5 +40,41 @@ struct SuiteFragility {
 /// Of scenario `s` of a complete sweep.
 SuiteFragility suite_fragility(const SuiteSpec& spec, const SweepResults& r, std::size_t s,
                                const std::vector<DamageState>& states);
+
+/// Both products of one scenario, gathered a slab of records at a time, so that whoever reads
+/// the results (from a file, say) never holds more than a slab: the overturning spectrum needs
+/// each record's own levels, the fragility only counts per [state, alpha, radius, level].
+/// Two passes over the records: add() them all, fit(), then add_errors() them all again for
+/// the fits' standard errors, clustered by record (records/stripe_clusters.hpp: a record's runs
+/// at every level are not independent trials), then fragility().
+class SuiteProducts {
+public:
+    /// Keeps a reference to `spec`, which must outlive it.
+    SuiteProducts(const SuiteSpec& spec, std::size_t scenario, std::vector<DamageState> states);
+    /// Records [first_record, first_record + records) of the scenario, every one of their
+    /// cells ([record, alpha, radius, level] in C order) in `r` from entry `offset` on.
+    /// Each record once.
+    void add(const SweepResults& r, std::size_t offset, std::size_t first_record, std::size_t records);
+    /// Of the records added: complete once every record is.
+    const OverturningSpectrum& overturning() const { return overturning_; }
+    /// Fits the stripes of the records added, per state and block.
+    void fit();
+    /// The second pass: `records` records of `r` from entry `offset` (their cells as for add()),
+    /// every record added once more, slab by slab in any order.
+    void add_errors(const SweepResults& r, std::size_t offset, std::size_t records);
+    /// The stripes, and the fits with their record-clustered errors (the records given to
+    /// add_errors). Throws std::logic_error before fit().
+    SuiteFragility fragility() const;
+
+private:
+    std::vector<Stripe> stripes(std::size_t state, std::size_t block) const;
+
+    const SuiteSpec& spec_;
+    std::size_t scenario_;
+    OverturningSpectrum overturning_;
+    SuiteFragility counts_;  // exceed, total and sensitive; no fits
+    std::vector<FragilityFit> fits_;        // [state, alpha, radius], after fit()
+    std::vector<StripeClusters> clusters_;  // the same, gathering each record's score
+};
 
 }  // namespace rocksweep
