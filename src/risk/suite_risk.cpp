@@ -89,6 +89,7 @@ SuiteRisk suite_risk(const HazardCurve& h, const SuiteFragilityTable& t) {
     SuiteRisk out;
     out.deaggregation_intensity = deaggregation_grid(h, t.levels);
     const std::size_t blocks = t.blocks(), levels = t.levels.size(), points = out.deaggregation_intensity.size();
+    const bool delta = t.covariance();  // else the box (docs/risk.md, "From the fit")
     for (const ScenarioFragility& s : t.scenarios) {
         ScenarioRisk r;
         r.name = s.name;
@@ -98,7 +99,7 @@ SuiteRisk suite_risk(const HazardCurve& h, const SuiteFragilityTable& t) {
             const LognormalFragility curve{fitted ? s.median[b] : nan, fitted ? s.beta[b] : nan};
             const RiskRate fit = annual_rate(h, curve);
             double lo = nan, hi = nan;
-            if (fitted && t.covariance()) delta_interval(h, s, b, fit.rate, lo, hi);
+            if (fitted && delta) delta_interval(h, s, b, fit.rate, lo, hi);
             else if (fitted) box_interval(h, s, b, lo, hi);
             r.rate_fit.push_back(fit.rate), r.below_fit.push_back(fit.below), r.above_fit.push_back(fit.above);
             r.rate_fit_lo.push_back(lo), r.rate_fit_hi.push_back(hi);
