@@ -1,9 +1,10 @@
 #!/usr/bin/python3
 """Draws the annual rate of a risk file's damage state per anchorage and floor (rocksweep risk
 of a suite on several floors, scenarios SCENARIO@FLOOR; docs/risk.md): one group of bars per
-anchorage, one marker per floor, the lognormal fit's rate with the range of its 95 % intervals, the
-empirical fractions' rate as a diamond beside it; the right axis gives P in the exposure time. The
-rate axis is logarithmic: with a dozen records the ranges span one to two decades.
+anchorage, one marker per floor, the lognormal fit's rate with its 95 % range (the risk file's
+rate_fit_lo/hi: the delta method with the fit's covariance, docs/risk.md), the empirical
+fractions' rate as a diamond beside it; the right axis gives P in the exposure time. The rate
+axis is logarithmic: with a dozen records the ranges span about a decade.
 
 usage: plot_risk_floors.py RISK.h5 -o OUT [--state overturning] [--alpha A] [--radius R]
 """

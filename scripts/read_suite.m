@@ -32,7 +32,8 @@ function S = read_suite(file, scenario)
 %                          first_pga_g, below_intensity, safe_above [record, alpha, radius]
 %     S.fragility          [] unless complete, else a struct with .states (cell array of names),
 %                          .rotation_ratios, fraction, fraction_lo, fraction_hi, exceed, total
-%                          [state, alpha, radius, level], median, beta, ..., fit_status
+%                          [state, alpha, radius, level], median, beta, ...,
+%                          cov_ln_median_beta (absent in files before it), fit_status
 %                          [state, alpha, radius]
 %                          and .fit_status_names (cell array of the fit_status meanings);
 %                          .sensitive_runs [state, alpha, radius] with --check-sensitivity

@@ -30,6 +30,7 @@ As a module:
     sc["fragility"]                   # None unless complete, else {"states": names,
                                       #   "rotation_ratios", "fraction"[state, alpha, radius, level],
                                       #   ..., "median_intensity", "beta", ... [state, alpha, radius],
+                                      #   "cov_ln_median_beta" (NaN in files before it),
                                       #   "fit_status" (codes), "fit_status_names" (str),
                                       #   "sensitive_runs" [state, alpha, radius] with the check}
 
@@ -63,7 +64,8 @@ PER_RECORD = ("pga_g", "pga_time_s", "pgv_m_s", "pgv_time_s", "residual_velocity
               "significant_duration_s", "duration_s", "pga_vertical_g")
 OVERTURNING = ("first_intensity", "first_pga_g", "below_intensity", "safe_above")
 FRAGILITY = ("fraction", "fraction_lo", "fraction_hi", "exceed", "total", "median_intensity", "beta", "median_intensity_lo",
-             "median_intensity_hi", "beta_lo", "beta_hi", "se_ln_median", "se_beta", "fit_status",
+             "median_intensity_hi", "beta_lo", "beta_hi", "se_ln_median", "se_beta", "cov_ln_median_beta",
+             "fit_status",
              "sensitive_runs")
 FIT_STATUS = ("ok", "none_reached", "all_reached", "zero_dispersion", "not_identifiable", "decreasing")
 
@@ -161,6 +163,8 @@ def _fragility(g):
                 out["units"][new] = value(g[old].attrs["units"])
     if "alpha_rad" not in g:
         _one_alpha(out, FRAGILITY)
+    if "cov_ln_median_beta" not in out:  # files before it: unknown
+        out["cov_ln_median_beta"] = np.full(out["beta"].shape, np.nan)
     out["states"] = flag_meanings(g["damage_state"])
     out["rotation_ratios"] = np.asarray(g["damage_state"].attrs["rotation_ratios"], dtype=float)
     meanings = flag_meanings(g["fit_status"]) if "flag_meanings" in g["fit_status"].attrs else FIT_STATUS

@@ -64,6 +64,9 @@ SuiteFragilityTable read_table(const h5::File& f, const std::string& path) {
         s.median = read(median.c_str()), s.median_lo = read((median + "_lo").c_str());
         s.median_hi = read((median + "_hi").c_str()), s.beta = read("beta");
         s.beta_lo = read("beta_lo"), s.beta_hi = read("beta_hi");
+        // The covariance came after the errors: a file without it gets the box range.
+        if (fr.exists("cov_ln_median_beta"))
+            s.se_ln_median = read("se_ln_median"), s.se_beta = read("se_beta"), s.cov_ln_median_beta = read("cov_ln_median_beta");
         s.fit_status = h5::read_array<std::uint8_t>(fr, "fit_status").values;
         const std::size_t blocks = t.blocks();
         if (s.median.size() != blocks || s.fit_status.size() != blocks || s.fraction.size() != blocks * t.levels.size())
@@ -135,12 +138,17 @@ void write_scenario(const h5::Group& parent, const RiskReport& r, const Scenario
             share_above.push_back(rate > 0 ? (*src.above)[b] / rate : NAN);
         }
         put(("rate_" + tag).c_str(), *src.rate, "1/yr", "mean annual rate of the damage state (" + what + ")");
+        // The fit's range: the delta method with the fit's covariance, or, for a suite file
+        // without it, the box of the marginal intervals (docs/risk.md, "From the fit").
+        const bool delta = r.fragility.covariance();
         put(("rate_" + tag + "_lo").c_str(), *src.lo, "1/yr",
-            tag == "fit" ? "low end: least rate over the corners of the 95 % intervals of median and beta"
-                         : "low end: the rate of Wilson's low 95 % bounds of every fraction");
+            tag != "fit" ? "low end: the rate of Wilson's low 95 % bounds of every fraction"
+            : delta      ? "low end of the 95 % range: delta method on ln(rate) with the fit's covariance of ln(median) and beta"
+                         : "low end: least rate over the corners of the 95 % intervals of median and beta (file without the fit's covariance)");
         put(("rate_" + tag + "_hi").c_str(), *src.hi, "1/yr",
-            tag == "fit" ? "high end: greatest rate over the corners of the 95 % intervals of median and beta"
-                         : "high end: the rate of Wilson's high 95 % bounds of every fraction");
+            tag != "fit" ? "high end: the rate of Wilson's high 95 % bounds of every fraction"
+            : delta      ? "high end of the 95 % range: delta method on ln(rate) with the fit's covariance of ln(median) and beta"
+                         : "high end: greatest rate over the corners of the 95 % intervals of median and beta (file without the fit's covariance)");
         put(("probability_" + tag).c_str(), p, "1", "probability of the damage state" + in_t + " (" + what + ")");
         put(("return_period_" + tag).c_str(), period, "yr", "return period 1 / rate (" + what + ")");
         put(("share_below_" + tag).c_str(), share_below, "1", "share of the rate from below the hazard curve's first point (extrapolated)");

@@ -82,6 +82,8 @@ void write_fragility(const h5::Group& scenario, const SuiteSpec& spec, const Sui
         {"beta_hi", [](const FragilityFit& x) { return x.beta_hi; }, "1", "95 % interval of beta: high end"},
         {"se_ln_median", [](const FragilityFit& x) { return x.se_ln_median; }, "1", "standard error of ln(median)"},
         {"se_beta", [](const FragilityFit& x) { return x.se_beta; }, "1", "standard error of beta"},
+        {"cov_ln_median_beta", [](const FragilityFit& x) { return x.cov_ln_median_beta; }, "1",
+         "covariance of ln(median) and beta (of the fit's estimates)"},
     };
     for (const FitColumn& c : columns) {
         std::vector<double> v;

@@ -77,17 +77,21 @@ FragilityFit limit_fit(FitStatus s, double median, double beta) {
     FragilityFit f;
     f.status = s;
     f.curve = {median, beta};
-    f.se_ln_median = f.se_beta = f.median_lo = f.median_hi = f.beta_lo = f.beta_hi = f.log_likelihood = kNaN;
+    f.se_ln_median = f.se_beta = f.cov_ln_median_beta = f.median_lo = f.median_hi = f.beta_lo = f.beta_hi = f.log_likelihood = kNaN;
     return f;
 }
 
-/// Variance of a smooth function of (x0, x1) with gradient (j0, j1), from the inverse of
-/// the negative Hessian (the observed information).
-double delta_variance(const Local& at, double j0, double j1, bool fix1) {
-    if (fix1) return j0 * j0 / -at.h00;
+/// Covariance of two smooth functions of (x0, x1) with gradients j and k, from the inverse of
+/// the negative Hessian (the observed information): j^T (-H)^-1 k.
+double delta_covariance(const Local& at, double j0, double j1, double k0, double k1, bool fix1) {
+    if (fix1) return j0 * k0 / -at.h00;
     const double det = at.h00 * at.h11 - at.h01 * at.h01;
     // (-H)^-1 = [[-h11, h01], [h01, -h00]] / det
-    return (-at.h11 * j0 * j0 + 2.0 * at.h01 * j0 * j1 - at.h00 * j1 * j1) / det;
+    return (-at.h11 * j0 * k0 + at.h01 * (j0 * k1 + j1 * k0) - at.h00 * j1 * k1) / det;
+}
+
+double delta_variance(const Local& at, double j0, double j1, bool fix1) {
+    return delta_covariance(at, j0, j1, j0, j1, fix1);
 }
 
 }  // namespace
@@ -188,8 +192,11 @@ FragilityFit fit_capacities(std::span<const Capacity> capacities) {
     f.iterations = maximise(eval, delta, gamma, false, at);
     f.curve = {std::exp(mean + delta / gamma), 1.0 / gamma};
     f.log_likelihood = at.f;
-    f.se_ln_median = std::sqrt(delta_variance(at, 1.0 / gamma, -delta / (gamma * gamma), false));
-    f.se_beta = std::sqrt(delta_variance(at, 0.0, -1.0 / (gamma * gamma), false));
+    // ln median = mean + delta / gamma, beta = 1 / gamma
+    const double j0 = 1.0 / gamma, j1 = -delta / (gamma * gamma), k1 = -1.0 / (gamma * gamma);
+    f.se_ln_median = std::sqrt(delta_variance(at, j0, j1, false));
+    f.se_beta = std::sqrt(delta_variance(at, 0.0, k1, false));
+    f.cov_ln_median_beta = delta_covariance(at, j0, j1, 0.0, k1, false);
     intervals(f);
     return f;
 }
@@ -265,6 +272,7 @@ FragilityFit fit_stripes(std::span<const Stripe> stripes, double fixed_beta) {
     // ln median = u_bar - a / b, beta = 1 / b
     f.se_ln_median = std::sqrt(delta_variance(at, -1.0 / b, a / (b * b), fix));
     f.se_beta = fix ? 0.0 : std::sqrt(delta_variance(at, 0.0, -1.0 / (b * b), false));
+    f.cov_ln_median_beta = fix ? 0.0 : delta_covariance(at, -1.0 / b, a / (b * b), 0.0, -1.0 / (b * b), false);
     intervals(f);
     return f;
 }

@@ -58,13 +58,17 @@ FragilityFit StripeClusters::corrected(std::span<const Stripe> stripes) const {
     // H^-1 = [[h11, -h01], [-h01, h00]] / det; V = H^-1 M H^-1 (G / (G - 1)).
     const double i00 = h11 / det, i01 = -h01 / det, i11 = h00 / det;
     const double k = static_cast<double>(records_) / static_cast<double>(records_ - 1);
-    auto variance = [&](double j0, double j1) {  // of a function with gradient (j0, j1) in (a, b)
-        const double w0 = i00 * j0 + i01 * j1, w1 = i01 * j0 + i11 * j1;  // H^-1 j
-        return k * (w0 * w0 * m00_ + 2.0 * w0 * w1 * m01_ + w1 * w1 * m11_);
+    // Of two functions with gradients j and q in (a, b): (H^-1 j)^T M (H^-1 q).
+    auto covariance = [&](double j0, double j1, double q0, double q1) {
+        const double w0 = i00 * j0 + i01 * j1, w1 = i01 * j0 + i11 * j1;
+        const double v0 = i00 * q0 + i01 * q1, v1 = i01 * q0 + i11 * q1;
+        return k * (w0 * v0 * m00_ + (w0 * v1 + w1 * v0) * m01_ + w1 * v1 * m11_);
     };
+    const double m0 = -1.0 / b, m1 = a / (b * b), b1 = -1.0 / (b * b);  // ln median = -a / b, beta = 1 / b
     FragilityFit f = fit_;
-    f.se_ln_median = std::sqrt(variance(-1.0 / b, a / (b * b)));  // ln median = -a / b
-    f.se_beta = std::sqrt(variance(0.0, -1.0 / (b * b)));           // beta = 1 / b
+    f.se_ln_median = std::sqrt(covariance(m0, m1, m0, m1));
+    f.se_beta = std::sqrt(covariance(0.0, b1, 0.0, b1));
+    f.cov_ln_median_beta = covariance(m0, m1, 0.0, b1);
     fit_detail::intervals(f);
     return f;
 }

@@ -14,9 +14,11 @@ namespace rocksweep {
 namespace {
 
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+constexpr double z95 = 1.959963984540054;  // Phi^-1(0.975)
 
-/// The fit's lambda over the corners of the box of the 95 % intervals of the median and beta.
-void fit_interval(const HazardCurve& h, const ScenarioFragility& s, std::size_t b, double& lo, double& hi) {
+/// The fit's lambda over the corners of the box of the 95 % intervals of the median and beta:
+/// the range of a suite file that holds no covariance.
+void box_interval(const HazardCurve& h, const ScenarioFragility& s, std::size_t b, double& lo, double& hi) {
     lo = hi = nan;
     const double medians[] = {s.median_lo[b], s.median_hi[b]}, betas[] = {s.beta_lo[b], s.beta_hi[b]};
     for (const double m : medians)
@@ -28,7 +30,31 @@ void fit_interval(const HazardCurve& h, const ScenarioFragility& s, std::size_t 
         }
 }
 
+/// The delta method on ln lambda: var = g^T Sigma g, g its gradient in (ln median, beta) by
+/// central differences, Sigma the fit's covariance; the range lambda exp(+-1.96 sd).
+void delta_interval(const HazardCurve& h, const ScenarioFragility& s, std::size_t b, double rate, double& lo, double& hi) {
+    lo = hi = nan;
+    const double m = s.median[b], beta = s.beta[b];
+    const double vm = s.se_ln_median[b] * s.se_ln_median[b], vb = s.se_beta[b] * s.se_beta[b], c = s.cov_ln_median_beta[b];
+    if (!(beta > 0.0) || !(rate > 0.0) || !std::isfinite(vm) || !std::isfinite(vb) || !std::isfinite(c)) return;
+    // Steps far below any standard error and far above the quadrature's 1e-14 relative error.
+    const double du = 1e-3, db = 1e-3 * beta;
+    const auto ln_rate = [&](double median, double dispersion) {
+        return std::log(annual_rate(h, LognormalFragility{median, dispersion}).rate);
+    };
+    const double g0 = (ln_rate(m * std::exp(du), beta) - ln_rate(m * std::exp(-du), beta)) / (2.0 * du);
+    const double g1 = (ln_rate(m, beta + db) - ln_rate(m, beta - db)) / (2.0 * db);
+    const double sd = std::sqrt(std::max(0.0, g0 * g0 * vm + 2.0 * g0 * g1 * c + g1 * g1 * vb));
+    lo = rate * std::exp(-z95 * sd);
+    hi = rate * std::exp(z95 * sd);
+}
+
 }  // namespace
+
+bool SuiteFragilityTable::covariance() const {
+    return std::all_of(scenarios.begin(), scenarios.end(),
+                       [&](const ScenarioFragility& s) { return s.cov_ln_median_beta.size() == blocks(); });
+}
 
 void check_same_measure(const HazardCurve& h, const std::string& hazard_path, const SuiteFragilityTable& t) {
     const std::string name = hazard_measure_name(h.measure(), h.period_s());
@@ -63,6 +89,7 @@ SuiteRisk suite_risk(const HazardCurve& h, const SuiteFragilityTable& t) {
     SuiteRisk out;
     out.deaggregation_intensity = deaggregation_grid(h, t.levels);
     const std::size_t blocks = t.blocks(), levels = t.levels.size(), points = out.deaggregation_intensity.size();
+    const bool delta = t.covariance();  // else the box (docs/risk.md, "From the fit")
     for (const ScenarioFragility& s : t.scenarios) {
         ScenarioRisk r;
         r.name = s.name;
@@ -72,7 +99,8 @@ SuiteRisk suite_risk(const HazardCurve& h, const SuiteFragilityTable& t) {
             const LognormalFragility curve{fitted ? s.median[b] : nan, fitted ? s.beta[b] : nan};
             const RiskRate fit = annual_rate(h, curve);
             double lo = nan, hi = nan;
-            if (fitted) fit_interval(h, s, b, lo, hi);
+            if (fitted && delta) delta_interval(h, s, b, fit.rate, lo, hi);
+            else if (fitted) box_interval(h, s, b, lo, hi);
             r.rate_fit.push_back(fit.rate), r.below_fit.push_back(fit.below), r.above_fit.push_back(fit.above);
             r.rate_fit_lo.push_back(lo), r.rate_fit_hi.push_back(hi);
 

@@ -212,5 +212,48 @@ TEST(SuiteRisk, RatesIntervalsAndStatusesOfOneScenario) {
     EXPECT_NEAR(area / k.rate_fit[0], 1.0, 0.01);
 }
 
+// With the fit's covariance the range is the delta method's on ln lambda. On a power-law hazard
+// H = k0 x^-k the rate is k0 median^-k exp(k^2 beta^2 / 2) exactly, so ln lambda has gradient
+// (-k, k^2 beta) in (ln median, beta) and var = k^2 v_m - 2 k^3 beta c + k^4 beta^2 v_b; the
+// central differences must give it to 1e-6. A positive covariance narrows the range here (the
+// two terms pull ln lambda opposite ways); a fit without errors has no range.
+TEST(SuiteRisk, FitRangeIsTheDeltaMethodWithTheCovariance) {
+    const double k = 2.5, median = 0.4, beta = 0.5, sm = 0.3, sb = 0.15;
+    const HazardCurve h = power_law(1e-4, k, 0.02, 3.0);
+    SuiteFragilityTable t;
+    t.measure = "pga_g";
+    t.states = {"overturning"};
+    t.alphas = {0.2};
+    t.radii = {1.0, 2.0};
+    t.levels = {0.1, 0.8};
+    ScenarioFragility s;
+    s.name = "free";
+    s.fraction = {0.0, 0.5, 0.0, 0.5};
+    s.fraction_lo = s.fraction_hi = s.fraction;
+    s.median = {median, median};
+    s.beta = {beta, beta};
+    s.median_lo = s.median_hi = s.beta_lo = s.beta_hi = {NAN, NAN};  // unused with the covariance
+    s.se_ln_median = {sm, NAN};
+    s.se_beta = {sb, NAN};
+    s.fit_status = {0, 0};
+    const double rate = 1e-4 * std::pow(median, -k) * std::exp(k * k * beta * beta / 2);
+    for (const double c : {0.0, 0.6 * sm * sb, -0.6 * sm * sb}) {
+        s.cov_ln_median_beta = {c, NAN};
+        t.scenarios = {s};
+        ASSERT_TRUE(t.covariance());
+        const ScenarioRisk r = suite_risk(h, t).scenarios[0];
+        const double sd = std::sqrt(k * k * sm * sm - 2 * k * k * k * beta * c + k * k * k * k * beta * beta * sb * sb);
+        EXPECT_NEAR(r.rate_fit[0] / rate, 1.0, 1e-9);
+        EXPECT_NEAR(std::log(r.rate_fit_hi[0] / rate) / (1.959963984540054 * sd), 1.0, 1e-6) << c;
+        EXPECT_NEAR(std::log(rate / r.rate_fit_lo[0]) / (1.959963984540054 * sd), 1.0, 1e-6) << c;
+        EXPECT_TRUE(std::isnan(r.rate_fit_lo[1]) && std::isnan(r.rate_fit_hi[1]));
+        EXPECT_NEAR(r.rate_fit[1] / rate, 1.0, 1e-9);
+    }
+    // A scenario without the covariance (an older file) sends every scenario back to the box.
+    s.cov_ln_median_beta.clear();
+    t.scenarios = {s};
+    EXPECT_FALSE(t.covariance());
+}
+
 }  // namespace
 }  // namespace rocksweep

@@ -89,6 +89,9 @@ def test_values(path):
         check(ok.any() and np.allclose(at_median, 0.5), "{}: each ok fit is 0.5 at its median".format(name))
         check(np.all((fr["median_intensity_lo"][ok] < fr["median_intensity"][ok]) & (fr["median_intensity"][ok] < fr["median_intensity_hi"][ok])),
               "{}: median inside its interval".format(name))
+        # The mock, like a file written before the fits' covariance, lacks it: NaN of beta's shape.
+        check(fr["cov_ln_median_beta"].shape == fr["beta"].shape and np.isnan(fr["cov_ln_median_beta"]).all(),
+              "{}: a file without cov_ln_median_beta reads it as NaN".format(name))
     check(list(read_suite.fragility_curve([0.1, 0.2, 0.3], 0.2, 0.0)) == [0.0, 1.0, 1.0]
           and np.isnan(read_suite.fragility_curve([0.1], math.inf, math.nan)).all(),
           "fragility_curve: a zero-dispersion fit is a step at its median, an infinite median no curve")

@@ -37,12 +37,16 @@ std::string to_string(FitStatus s);
 /// A fit with its uncertainty: standard errors from the inverse of the observed Fisher
 /// information at the maximum (asymptotic: they assume many records / runs), and the 95 %
 /// Wald intervals they imply, on ln(median) (so the median's interval is not symmetric) and
-/// on ln(beta) (so it stays positive). NaN where the status leaves them undefined.
+/// on ln(beta) (so it stays positive), and the covariance of ln(median) and beta, which a
+/// function of both (an annual rate) needs. NaN where the status leaves them undefined.
 struct FragilityFit {
     FitStatus status = FitStatus::ok;
     LognormalFragility curve;
     double se_ln_median = 0.0;  ///< standard error of ln(median)
     double se_beta = 0.0;       ///< standard error of beta (0 when beta was fixed)
+    /// Covariance of ln(median) and beta (0 when beta was fixed, and in the closed form, where
+    /// the normal MLE's mean and standard deviation are independent).
+    double cov_ln_median_beta = 0.0;
     double median_lo = 0.0, median_hi = 0.0;  ///< 95 % interval of the median
     double beta_lo = 0.0, beta_hi = 0.0;      ///< 95 % interval of beta
     double log_likelihood = 0.0;

@@ -29,7 +29,7 @@ public:
     void add(std::span<const std::int8_t> outcome);
     std::size_t records() const { return records_; }
 
-    /// `fit` with se_ln_median, se_beta and the 95 % intervals from the sandwich over the records
+    /// `fit` with se_ln_median, se_beta, cov_ln_median_beta and the 95 % intervals from the sandwich over the records
     /// added (`stripes`: the pooled runs it was fitted to, for the Hessian). Unchanged unless
     /// its status is ok and beta was fitted, and at least two records were added.
     FragilityFit corrected(std::span<const Stripe> stripes) const;

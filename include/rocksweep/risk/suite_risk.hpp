@@ -18,6 +18,9 @@ struct ScenarioFragility {
     std::string floor = "ground";  ///< the suite's /floors group the blocks stood on
     std::vector<double> fraction, fraction_lo, fraction_hi;  ///< [state, alpha, radius, level]
     std::vector<double> median, beta, median_lo, median_hi, beta_lo, beta_hi;  ///< [state, alpha, radius]
+    /// The fit's standard errors and covariance of (ln median, beta), [state, alpha, radius];
+    /// empty for a suite file written before the covariance.
+    std::vector<double> se_ln_median, se_beta, cov_ln_median_beta;
     std::vector<std::uint8_t> fit_status;                     ///< FitStatus codes, [state, alpha, radius]
 };
 
@@ -28,6 +31,9 @@ struct SuiteFragilityTable {
     std::vector<std::string> states;
     std::vector<double> alphas, radii, levels;
     std::vector<ScenarioFragility> scenarios;
+    /// Every scenario has the fit's covariance: the fit's rate ranges are the delta method's;
+    /// otherwise the box of the marginal intervals (docs/risk.md, "From the fit").
+    bool covariance() const;
     std::size_t blocks() const { return states.size() * alphas.size() * radii.size(); }
 };
 
@@ -42,10 +48,11 @@ inline constexpr double hazard_sa_damping = 0.05;
 
 struct ScenarioRisk {
     std::string name;
-    /// [state, alpha, radius]: lambda [1/yr] from the lognormal fit, its interval (the lowest
-    /// and highest lambda over the corners of the box of the median's and beta's 95 %
-    /// intervals), the parts from below / above the hazard curve's points; NaN where the fit
-    /// status is neither ok nor zero_dispersion.
+    /// [state, alpha, radius]: lambda [1/yr] from the lognormal fit, its 95 % range (the delta
+    /// method on ln lambda with the fit's covariance; for a file without it, the lowest and
+    /// highest lambda over the corners of the box of the median's and beta's 95 % intervals),
+    /// the parts from below / above the hazard curve's points; NaN where the fit status is
+    /// neither ok nor zero_dispersion (the range NaN too where the fit has no errors).
     std::vector<double> rate_fit, rate_fit_lo, rate_fit_hi, below_fit, above_fit;
     /// The same from the empirical fractions (P linear in ln x between levels, 0 below the
     /// first, the last held above), the interval from Wilson's bounds of every fraction.
