@@ -14,9 +14,6 @@
 #include "rocksweep/app/option_checks.hpp"
 #include "rocksweep/io/output_claim.hpp"
 
-#ifndef ROCKSWEEP_VERSION
-#define ROCKSWEEP_VERSION "unknown"
-#endif
 
 namespace rocksweep {
 

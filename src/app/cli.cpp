@@ -23,9 +23,6 @@
 #include "rocksweep/app/option_checks.hpp"
 #include "rocksweep/app/option_combinations.hpp"
 
-#ifndef ROCKSWEEP_VERSION
-#define ROCKSWEEP_VERSION "unknown"
-#endif
 
 namespace rocksweep {
 

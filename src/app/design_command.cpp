@@ -28,9 +28,6 @@
 #include "rocksweep/io/run_inputs.hpp"
 #include "rocksweep/io/spectra_file.hpp"
 
-#ifndef ROCKSWEEP_VERSION
-#define ROCKSWEEP_VERSION "unknown"
-#endif
 
 namespace rocksweep {
 

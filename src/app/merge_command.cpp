@@ -11,9 +11,6 @@
 #include "rocksweep/io/spectra_file.hpp"
 #include "rocksweep/grid/sweep.hpp"
 
-#ifndef ROCKSWEEP_VERSION
-#define ROCKSWEEP_VERSION "unknown"
-#endif
 
 namespace rocksweep {
 

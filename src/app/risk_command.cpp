@@ -16,9 +16,6 @@
 #include "rocksweep/io/risk_file.hpp"
 #include "rocksweep/records/intensity.hpp"
 
-#ifndef ROCKSWEEP_VERSION
-#define ROCKSWEEP_VERSION "unknown"
-#endif
 
 namespace rocksweep {
 

@@ -12,9 +12,6 @@
 #include "rocksweep/motion/floor_filter.hpp"
 #include "rocksweep/records/record.hpp"
 
-#ifndef ROCKSWEEP_VERSION
-#define ROCKSWEEP_VERSION "unknown"
-#endif
 
 namespace rocksweep {
 

@@ -24,9 +24,6 @@
 #include "rocksweep/parallel/progress.hpp"
 #include "rocksweep/parallel/scheduler.hpp"
 
-#ifndef ROCKSWEEP_VERSION
-#define ROCKSWEEP_VERSION "unknown"
-#endif
 
 namespace rocksweep {
 

@@ -19,9 +19,6 @@
 #include "rocksweep/parallel/scheduler.hpp"
 #include "rocksweep/physics/integrator.hpp"
 
-#ifndef ROCKSWEEP_VERSION
-#define ROCKSWEEP_VERSION "unknown"
-#endif
 
 namespace rocksweep {
 
