@@ -14,6 +14,8 @@
 #include "rocksweep/records/fragility.hpp"
 #include "rocksweep/records/stripe_clusters.hpp"
 
+#include "simulated_ida.hpp"
+
 namespace rocksweep {
 namespace {
 
@@ -123,33 +125,6 @@ TEST(FitCovariance, StripesSignFollowsWhereTheDataAre) {
     EXPECT_EQ(binomial(rng, 0.25, 2.0, 50, 0.5).cov_ln_median_beta, 0.0);
 }
 
-/// An IDA of `records` records over 30 levels 0.05-1.5 (each record reaches the state at and
-/// above its own capacity): the record-clustered fit, and the pooled one.
-struct Ida {
-    FragilityFit pooled, clustered;
-};
-Ida ida(std::mt19937_64& rng, int records, double median, double beta) {
-    std::vector<double> x;
-    for (int l = 1; l <= 30; ++l) x.push_back(0.05 * l);
-    std::normal_distribution<double> z;
-    std::vector<Stripe> stripes;
-    for (double xl : x) stripes.push_back({xl, 0, records});
-    std::vector<std::vector<std::int8_t>> outcome(records, std::vector<std::int8_t>(x.size()));
-    for (auto& rec : outcome) {
-        const double capacity = median * std::exp(beta * z(rng));
-        for (std::size_t l = 0; l < x.size(); ++l) {
-            rec[l] = x[l] >= capacity ? 1 : 0;
-            stripes[l].exceed += rec[l];
-        }
-    }
-    Ida out;
-    out.pooled = fit_stripes(stripes);
-    StripeClusters c(out.pooled, x);
-    for (const auto& rec : outcome) c.add(rec);
-    out.clustered = c.corrected(stripes);
-    return out;
-}
-
 // The sandwich's covariance matches the scatter of 600 IDA experiments of 60 records; with the
 // median high in the levels (1.2 of 0.05-1.5 g: its upper part unseen) it is positive, as
 // censoring above makes it; the pooled fit's observed information, counting each run as a
@@ -159,7 +134,7 @@ TEST(FitCovariance, ClusteredMatchesTheScatterOfRecords) {
         Scatter clustered, pooled;
         std::mt19937_64 rng(static_cast<unsigned>(100 * median));
         for (int k = 0; k < 600; ++k) {
-            const Ida e = ida(rng, 60, median, 0.6);
+            const simulated::Ida e = simulated::ida(rng, 60, median, 0.6);
             if (e.clustered.status != FitStatus::ok) continue;
             clustered.add(e.clustered);
             pooled.add(e.pooled);

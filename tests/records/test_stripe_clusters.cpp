@@ -2,6 +2,8 @@
 // every record at every level, and the errors must be those of the records, not of the runs.
 #include "rocksweep/records/stripe_clusters.hpp"
 
+#include "simulated_ida.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,40 +16,7 @@ namespace {
 
 constexpr double kMedian = 0.7, kBeta = 0.6;
 
-std::vector<double> levels() {  // 30 levels 0.05 .. 1.5, as the README's suites
-    std::vector<double> x;
-    for (int l = 1; l <= 30; ++l) x.push_back(0.05 * l);
-    return x;
-}
-
-struct Experiment {
-    FragilityFit naive, clustered;
-};
-
-/// `records` records; each run reaches the state when the level is at or above the record's
-/// lognormal capacity (`independent`: a fresh capacity for every run instead, as if every run
-/// were another record).
-Experiment experiment(std::mt19937_64& rng, int records, bool independent) {
-    const std::vector<double> x = levels();
-    std::normal_distribution<double> normal;
-    std::vector<std::vector<std::int8_t>> outcome(records, std::vector<std::int8_t>(x.size()));
-    std::vector<Stripe> stripes;
-    for (double xl : x) stripes.push_back({xl, 0, records});
-    for (auto& rec : outcome) {
-        double capacity = kMedian * std::exp(kBeta * normal(rng));
-        for (std::size_t l = 0; l < x.size(); ++l) {
-            if (independent) capacity = kMedian * std::exp(kBeta * normal(rng));
-            rec[l] = x[l] >= capacity ? 1 : 0;
-            stripes[l].exceed += rec[l];
-        }
-    }
-    Experiment e;
-    e.naive = fit_stripes(stripes);
-    StripeClusters clusters(e.naive, x);
-    for (const auto& rec : outcome) clusters.add(rec);
-    e.clustered = clusters.corrected(stripes);
-    return e;
-}
+std::vector<double> levels() { return simulated::ida_levels(); }
 
 struct Spread {
     double sd_ln_median = 0.0, sd_beta = 0.0;          // of the estimates over the experiments
@@ -61,13 +30,13 @@ Spread spread(int experiments, int records, bool independent, unsigned seed) {
     std::vector<double> m, b;
     Spread s;
     for (int k = 0; k < experiments; ++k) {
-        const Experiment e = experiment(rng, records, independent);
-        if (e.naive.status != FitStatus::ok) continue;
-        m.push_back(std::log(e.naive.curve.median));
-        b.push_back(e.naive.curve.beta);
-        s.naive_se += e.naive.se_ln_median;
+        const simulated::Ida e = simulated::ida(rng, records, kMedian, kBeta, independent);
+        if (e.pooled.status != FitStatus::ok) continue;
+        m.push_back(std::log(e.pooled.curve.median));
+        b.push_back(e.pooled.curve.beta);
+        s.naive_se += e.pooled.se_ln_median;
         s.clustered_se += e.clustered.se_ln_median;
-        s.naive_se_beta += e.naive.se_beta;
+        s.naive_se_beta += e.pooled.se_beta;
         s.clustered_se_beta += e.clustered.se_beta;
         s.covered += e.clustered.median_lo <= kMedian && kMedian <= e.clustered.median_hi ? 1 : 0;
     }
@@ -132,18 +101,18 @@ TEST(StripeClusters, DegenerateFitsAndInputsAreLeftAlone) {
 
     // One record is no spread: the fit's own errors are kept.
     std::mt19937_64 rng(3);
-    const Experiment e = experiment(rng, 40, false);
-    StripeClusters one(e.naive, levels());
+    const simulated::Ida e = simulated::ida(rng, 40, kMedian, kBeta);
+    StripeClusters one(e.pooled, levels());
     one.add(std::vector<std::int8_t>(30, 0));
-    EXPECT_EQ(one.corrected({}).se_ln_median, e.naive.se_ln_median);
+    EXPECT_EQ(one.corrected({}).se_ln_median, e.pooled.se_ln_median);
 }
 
 // A record with a run that did not converge counts the runs it has.
 TEST(StripeClusters, UnobservedRunsAreLeftOut) {
     std::mt19937_64 rng(11);
-    const Experiment e = experiment(rng, 60, false);
+    const simulated::Ida e = simulated::ida(rng, 60, kMedian, kBeta);
     const std::vector<double> x = levels();
-    StripeClusters a(e.naive, x), b(e.naive, x);
+    StripeClusters a(e.pooled, x), b(e.pooled, x);
     std::vector<std::int8_t> r(30, 0), with_gap(30, 0);
     for (int l = 15; l < 30; ++l) r[l] = with_gap[l] = 1;
     with_gap[3] = -1;  // a safe run (score < 0 there) left out: the record's score grows
