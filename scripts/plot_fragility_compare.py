@@ -78,13 +78,13 @@ def draw_file(ax, S, j, state, x):
             ax.plot([], [], color=colour, label=plot_suite.fit_label(w, fr, s, j, unit))
 
 
-def probit_median(x, exceed, total):
-    """Median of the lognormal P(x) = Phi(ln(x / median) / beta) maximising the binomial
-    likelihood of the stripes (docs/fragility.md, section 2); NaN without a finite maximum."""
+def probit_fit(x, exceed, total):
+    """(median, beta) of the lognormal P(x) = Phi(ln(x / median) / beta) maximising the binomial
+    likelihood of the stripes (docs/fragility.md, section 2); NaNs without a finite maximum."""
     keep = total > 0
     u, n, N = np.log(x[keep]), exceed[keep], total[keep]
     if n.sum() == 0 or n.sum() == N.sum():
-        return math.nan
+        return math.nan, math.nan
     ub = np.average(u, weights=N)
 
     def nll(p):
@@ -94,7 +94,23 @@ def probit_median(x, exceed, total):
     r = optimize.minimize(nll, [0.0, 1.0 / max(np.ptp(u), 0.1)], method="Nelder-Mead",
                           options={"xatol": 1e-9, "fatol": 1e-10, "maxiter": 4000})
     a, b = r.x
-    return math.exp(ub - a / b) if b > 0 else math.nan
+    return (math.exp(ub - a / b), 1.0 / b) if b > 0 else (math.nan, math.nan)
+
+
+def probit_median(x, exceed, total):
+    return probit_fit(x, exceed, total)[0]
+
+
+def runs_reaching(S, j, state):
+    """Per scenario (in the file's order): (reached, converged) [motion, level] of the state."""
+    fr0 = next(iter(S["scenarios"].values()))["fragility"]
+    ratio = fr0["rotation_ratios"][state_index(fr0, state, "")]
+    runs = []
+    for sc in S["scenarios"].values():
+        out, rot = sc["outcome"][:, j], sc["max_rotation"][:, j]   # [record, level]
+        seen = out != 255
+        runs.append((read_suite.reached(out, rot, None if np.isnan(ratio) else ratio) & seen, seen))
+    return runs
 
 
 def paired_ratios(S, j, state, replicates, seed=1):
@@ -102,16 +118,9 @@ def paired_ratios(S, j, state, replicates, seed=1):
     for every pair of scenarios (the later over the earlier, in the file's order), over a
     bootstrap of the motions: the same draw for every scenario."""
     names = list(S["scenarios"])
-    fr0 = S["scenarios"][names[0]]["fragility"]
-    s = state_index(fr0, state, "")
-    ratio = fr0["rotation_ratios"][s]
+    s = state_index(S["scenarios"][names[0]]["fragility"], state, "")
     x = S["intensity"]
-    runs = []
-    for nm in names:
-        sc = S["scenarios"][nm]
-        out, rot = sc["outcome"][:, j], sc["max_rotation"][:, j]   # [record, level]
-        seen = out != 255
-        runs.append((read_suite.reached(out, rot, None if np.isnan(ratio) else ratio) & seen, seen))
+    runs = runs_reaching(S, j, state)
     rng = np.random.default_rng(seed)
     records = runs[0][0].shape[0]
     medians = np.full((replicates, len(names)), np.nan)
