@@ -97,10 +97,6 @@ def probit_fit(x, exceed, total):
     return (math.exp(ub - a / b), 1.0 / b) if b > 0 else (math.nan, math.nan)
 
 
-def probit_median(x, exceed, total):
-    return probit_fit(x, exceed, total)[0]
-
-
 def runs_reaching(S, j, state):
     """Per scenario (in the file's order): (reached, converged) [motion, level] of the state."""
     fr0 = next(iter(S["scenarios"].values()))["fragility"]
@@ -127,7 +123,7 @@ def paired_ratios(S, j, state, replicates, seed=1):
     for k in range(replicates):
         w = np.bincount(rng.integers(0, records, records), minlength=records)
         for c, (reach, seen) in enumerate(runs):
-            medians[k, c] = probit_median(x, w @ reach, w @ seen)
+            medians[k, c] = probit_fit(x, w @ reach, w @ seen)[0]
     rows = []
     for c0 in range(len(names)):
         for c in range(c0 + 1, len(names)):

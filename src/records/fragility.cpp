@@ -118,6 +118,23 @@ double log_cdf(double z) {
 /// The inverse Mills ratio phi(z) / Phi(z): d ln Phi / dz.
 double mills(double z) { return std::exp(-0.5 * z * z - kLnSqrt2Pi - log_cdf(z)); }
 
+ProbitTerm probit_term(double z, double reached, double missed) {
+    ProbitTerm t;
+    if (reached > 0) {
+        const double l = mills(z);
+        t.f += reached * log_cdf(z);
+        t.d1 += reached * l;
+        t.d2 -= reached * l * (l + z);
+    }
+    if (missed > 0) {
+        const double l = mills(-z);
+        t.f += missed * log_cdf(-z);
+        t.d1 -= missed * l;
+        t.d2 -= missed * l * (l - z);
+    }
+    return t;
+}
+
 }  // namespace fit_detail
 
 double normal_cdf(double z) { return 0.5 * std::erfc(-z / M_SQRT2); }
@@ -242,21 +259,8 @@ FragilityFit fit_stripes(std::span<const Stripe> stripes, double fixed_beta) {
         at = Local{};
         for (const Stripe& s : stripes) {
             const double v = std::log(s.intensity) - u_bar, z = a + b * v;
-            const double n = s.exceed, m = s.total - s.exceed;
-            double fk = 0.0, d1 = 0.0, d2 = 0.0;
-            if (n > 0) {
-                const double l = mills(z);
-                fk += n * log_cdf(z);
-                d1 += n * l;
-                d2 -= n * l * (l + z);
-            }
-            if (m > 0) {
-                const double l = mills(-z);
-                fk += m * log_cdf(-z);
-                d1 -= m * l;
-                d2 -= m * l * (l - z);
-            }
-            at.add(fk, d1, d2, v);
+            const fit_detail::ProbitTerm t = fit_detail::probit_term(z, s.exceed, s.total - s.exceed);
+            at.add(t.f, t.d1, t.d2, v);
         }
         return std::isfinite(at.f);
     };

@@ -20,8 +20,8 @@ StripeClusters::StripeClusters(const FragilityFit& fit, std::vector<double> inte
     for (double x : intensities) {
         const double u = std::log(x), z = a + b * u;
         ln_x_.push_back(u);
-        score_reached_.push_back(active_ ? fit_detail::mills(z) : 0.0);
-        score_missed_.push_back(active_ ? -fit_detail::mills(-z) : 0.0);
+        score_reached_.push_back(active_ ? fit_detail::probit_term(z, 1, 0).d1 : 0.0);
+        score_missed_.push_back(active_ ? fit_detail::probit_term(z, 0, 1).d1 : 0.0);
     }
 }
 
@@ -42,13 +42,12 @@ void StripeClusters::add(std::span<const std::int8_t> outcome) {
 
 FragilityFit StripeClusters::corrected(std::span<const Stripe> stripes) const {
     if (!active_ || records_ < 2) return fit_;
-    // The Hessian of the pooled log-likelihood at the fit: d2 ln Phi(z) / dz2 = -l (l + z).
+    // The Hessian of the pooled log-likelihood at the fit.
     const double b = 1.0 / fit_.curve.beta, a = -std::log(fit_.curve.median) * b;
     double h00 = 0.0, h01 = 0.0, h11 = 0.0;
     for (const Stripe& s : stripes) {
         const double u = std::log(s.intensity), z = a + b * u;
-        const double l1 = fit_detail::mills(z), l0 = fit_detail::mills(-z);
-        const double d2 = -s.exceed * l1 * (l1 + z) - (s.total - s.exceed) * l0 * (l0 - z);
+        const double d2 = fit_detail::probit_term(z, s.exceed, s.total - s.exceed).d2;
         h00 += d2;
         h01 += d2 * u;
         h11 += d2 * u * u;

@@ -23,7 +23,7 @@ def main(path):
         for s, state in enumerate(fr["states"]):
             if fr["fit_status_names"][s, j] != "ok":
                 continue
-            ours = pfc.probit_median(S["intensity"], fr["exceed"][s, j].astype(float), fr["total"][s, j].astype(float))
+            ours = pfc.probit_fit(S["intensity"], fr["exceed"][s, j].astype(float), fr["total"][s, j].astype(float))[0]
             theirs = fr["median_intensity"][s, j]
             checked += 1
             if not abs(ours / theirs - 1) < 1e-4:
