@@ -110,8 +110,10 @@ void SweepRun::prepare_output() {
     const std::size_t total = spec_.cell_count();
     todo_ = restrict_to_part(resuming ? missing_cells(*stream_, total) : std::vector<IndexRange>{{0, total}}, part_);
     // A requeued job resumes a sweep (or its part) that already ended: saving again would only
-    // replace its recorded wall time with this run's few milliseconds.
-    already_complete_ = resuming && todo_.empty();
+    // replace its recorded wall time with this run's few milliseconds. One killed between its
+    // last cell and its close-out has every cell but not `complete` nor its checksums: it runs
+    // no cell and is closed out.
+    already_complete_ = resuming && todo_.empty() && stream_->closed_out();
     if (!resuming || cmd_.quiet) return;
     if (!already_complete_)
         log_ << "resuming " << cmd_.output << ": " << stream_->done_count() << " of " << total << " cells already done\n";

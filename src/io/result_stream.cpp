@@ -142,6 +142,13 @@ void ResultStream::open() {
     as_save(path_, [&] { fd_ = std::make_unique<Descriptor>(path_); });
     published_ = true;
     count_done();
+    const h5::File f = h5::File::open_read_only(path_);
+    closed_out_ = true;
+    for (const std::string& name : shape_.groups) {  // each closed before the file
+        const h5::Group g = f.open_group(name);
+        if (g.has_attribute(results_checksum_attribute) && h5::read_int64_attribute(g, results_checksum_attribute) == 0)
+            closed_out_ = false;
+    }
 }
 
 void ResultStream::locate(const std::string& file) {

@@ -128,6 +128,25 @@ TEST_F(Stream, ResumeSeesWhatWasSavedAndEndsWithTheWhole) {
     expect_same_results(read_spectra_results(out, spec, settings), expected(spec, spec.cell_count()));
 }
 
+TEST_F(Stream, AFileKilledBeforeItsCloseOutIsNotClosedOut) {
+    // The moment CI's kill test once hit: every cell checkpointed, then killed before finish().
+    {
+        SpectraStream s(out, spec, settings, Provenance{}, false);
+        add(s, 0, spec.cell_count());
+        s.checkpoint();
+    }
+    {
+        SpectraStream s(out, spec, settings, Provenance{}, true);
+        EXPECT_EQ(s.done_count(), spec.cell_count());
+        EXPECT_FALSE(s.closed_out());  // every cell, but neither `complete` nor the checksums
+        EXPECT_EQ(root_int(out, "complete"), 0);
+        s.finish(1.0);
+    }
+    EXPECT_EQ(root_int(out, "complete"), 1);
+    SpectraStream s(out, spec, settings, Provenance{}, true);
+    EXPECT_TRUE(s.closed_out());
+}
+
 TEST_F(Stream, ResumeOfAFileWrittenWholeRewritesItInPlaceLayout) {
     write_spectra(out, spec, expected(spec, 33), Provenance{}, settings);  // as merge writes
     SpectraStream s(out, spec, settings, Provenance{}, true);

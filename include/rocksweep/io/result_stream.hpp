@@ -68,6 +68,10 @@ public:
     /// Renames path + ".tmp" onto `path`. Throws InputError when it cannot.
     void publish();
     bool published() const { return published_; }
+    /// Whether the file opened was closed out (close_out() stored its checksums, or it has none):
+    /// a run killed after its last cell was written but before its close-out holds every cell
+    /// and must still be closed out.
+    bool closed_out() const { return closed_out_; }
 
     /// Cells done (computed or inferred): in the file, plus those added since.
     std::size_t done_count() const { return done_count_; }
@@ -112,6 +116,7 @@ private:
     std::unique_ptr<Descriptor> fd_;
     bool published_ = false;
     bool checksums_forgotten_ = false;  // the file's checksums are 0 until close_out() stores them
+    bool closed_out_ = false;
     std::size_t done_count_ = 0;
     std::vector<std::size_t> pending_index_;
     std::vector<CellResult> pending_cells_;

@@ -38,6 +38,9 @@ public:
 
     /// Cells done (computed or inferred): in the file, plus those added since.
     std::size_t done_count() const { return cells_.done_count(); }
+    /// Whether the file resumed was closed out by finish(): one killed (or converted) after its
+    /// last cell was written holds every cell but still needs its finish().
+    bool closed_out() const { return cells_.closed_out(); }
     /// Result dataset `name` (e.g. "done", "mu_required") of cells [first, first + count), as
     /// the file holds it (cells added since the last checkpoint read 0), into `out`, an array
     /// of the dataset's element type (docs/hdf5.md). Throws std::invalid_argument for an unknown
