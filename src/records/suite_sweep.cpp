@@ -153,7 +153,7 @@ void measure_made_motions(SuiteSpec& spec, std::size_t first, std::size_t count)
         m.record = spec.motions->motion(i);
         m.floors.clear();
         measure_member(m, spec, false);
-        m.record.ax_g = {};
+        m.record.ax_g = std::vector<double>();  // frees the samples: `= {}` would keep their capacity
     }
 }
 

@@ -47,7 +47,7 @@ public:
     /// can say this without making the motion overrides it.
     virtual Record described(std::size_t i) const {
         Record r = motion(i);
-        r.ax_g = {};
+        r.ax_g = std::vector<double>();  // frees the samples: `= {}` would keep their capacity
         return r;
     }
     /// What makes them, on one line (stored in the output).
