@@ -39,6 +39,9 @@ public:
         std::vector<std::string> groups;
         std::size_t cells_per_group = 0;
         bool sensitive = false;
+        /// What the file holds beside its result datasets, estimated (a suite's /records: a group
+        /// and measures per record): with the results, it decides whether the file is built in memory.
+        std::size_t layout_bytes = 0;
         std::size_t cell_count() const { return groups.size() * cells_per_group; }
     };
     /// Cells [cell, cell + count) of group `group`, taken from entries [from, from + count) of
