@@ -67,13 +67,15 @@ FitResult fit_model(const std::vector<double>& a_g, double dt_s, const FitSettin
     // The filter may not run past a quarter of the record's sampling rate (Generator).
     p.f_mid_hz = std::min(p.f_mid_hz, 0.2 / dt_s);
     fit.record_extrema = count_positive_minima_negative_maxima(a_g, dt_s, m.t05_s, m.t95_s);
-    // The drift must not carry the filter above the sampling limit over the record either.
-    const double record_s = static_cast<double>(a_g.size() - 1) * dt_s;
-    const double f_end = p.f_mid_hz + p.f_slope_hz_s * (record_s - p.tmid_s);
-    const double f_start = p.f_mid_hz - p.f_slope_hz_s * p.tmid_s;
+    // The drift must not carry the filter above the sampling limit while the motion lasts either
+    // (the envelope's window, filter_window_fraction; not the record's quiet lead-in or tail).
+    const Modulation q = modulation(p);
+    const double t_from = q.arias_time(filter_window_fraction), t_to = q.arias_time(1.0 - filter_window_fraction);
+    const double f_end = p.f_mid_hz + p.f_slope_hz_s * (t_to - p.tmid_s);
+    const double f_start = p.f_mid_hz - p.f_slope_hz_s * (p.tmid_s - t_from);
     const double f_cap = 0.24 / dt_s;
-    if (f_end > f_cap) p.f_slope_hz_s = (f_cap - p.f_mid_hz) / (record_s - p.tmid_s);
-    if (f_start > f_cap) p.f_slope_hz_s = (p.f_mid_hz - f_cap) / p.tmid_s;
+    if (f_end > f_cap) p.f_slope_hz_s = (f_cap - p.f_mid_hz) / (t_to - p.tmid_s);
+    if (f_start > f_cap) p.f_slope_hz_s = (p.f_mid_hz - f_cap) / (p.tmid_s - t_from);
     // The damping: more bandwidth, more extrema between crossings. The count rises with
     // zeta_f (the same noise at every zeta: a smooth curve), so bisect for the record's count.
     // Every stage is causal: motions counted up to t95 need be made no further.

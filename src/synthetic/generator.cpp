@@ -10,10 +10,15 @@
 namespace rocksweep::synthetic {
 namespace {
 
-// The filter's frequency at the impulse time t [Hz]: omega(tau) / (2 pi) = f_mid + f' (tau - t_mid).
-double filter_frequency_hz(const ModelParameters& p, double t_s, bool drift) {
-    if (!drift) return p.f_mid_hz;
-    return std::max(p.f_mid_hz + p.f_slope_hz_s * (t_s - p.tmid_s), filter_frequency_floor_hz);
+// The filter's line at the impulse time t [Hz]: omega(tau) / (2 pi) = f_mid + f' (tau - t_mid).
+double filter_line_hz(const ModelParameters& p, double t_s, bool drift) {
+    return drift ? p.f_mid_hz + p.f_slope_hz_s * (t_s - p.tmid_s) : p.f_mid_hz;
+}
+
+// The frequency the filter takes at t: the line, held within [the floor, `ceiling_hz`]. Below
+// the ceiling wherever the envelope carries the motion (the constructor refuses it otherwise).
+double filter_frequency_hz(const ModelParameters& p, double t_s, bool drift, double ceiling_hz) {
+    return std::clamp(filter_line_hz(p, t_s, drift), filter_frequency_floor_hz, ceiling_hz);
 }
 
 // `p` once it and the sampling are checked: before any member is made of them.
@@ -31,12 +36,20 @@ Generator::Generator(const ModelParameters& params, double dt_s, double duration
     : params_(checked(params, dt_s, duration_s)), dt_s_(dt_s), stages_(stages), high_pass_(params.fc_hz, dt_s) {
     const Modulation q = modulation(params);
     const std::size_t n = static_cast<std::size_t>(std::floor(duration_s / dt_s + 0.5)) + 1;
-    const double f_top = std::max(filter_frequency_hz(params, 0.0, stages.drift),
-                                  filter_frequency_hz(params, (n - 1) * dt_s, stages.drift));
+    // The line is straight: its highest value over the envelope's window is at one end of it.
+    const double t_from = std::min(q.arias_time(filter_window_fraction), (n - 1) * dt_s);
+    const double t_to = std::min(q.arias_time(1.0 - filter_window_fraction), (n - 1) * dt_s);
+    const double f_top = std::max({filter_line_hz(params, t_from, stages.drift), filter_line_hz(params, t_to, stages.drift),
+                                   filter_frequency_floor_hz});
     if (!(f_top * dt_s < 0.25))
         throw InputError("dt", format_short(dt_s),
-                         "the filter's highest frequency, " + format_short(f_top, 4) +
+                         "the filter's highest frequency where the envelope carries the motion (" + format_short(t_from, 4) + " to " +
+                             format_short(t_to, 4) + " s), " + format_short(f_top, 4) +
                              " Hz, must stay below a quarter of the sampling rate: dt < " + format_short(0.25 / f_top, 4) + " s");
+    // Before and after, where the envelope holds 1e-4 of I_a, the line is held just below the
+    // limit: a line that stays below it throughout (all a version before the window accepted)
+    // is never held, so its motions are bitwise what they were.
+    const double ceiling = std::nextafter(0.25 / dt_s, 0.0);
 
     const double zeta = params.zeta_f, root = std::sqrt(1.0 - zeta * zeta);
     amplitude_.resize(n);
@@ -44,7 +57,7 @@ Generator::Generator(const ModelParameters& params, double dt_s, double duration
     rotation_im_.resize(n);
     length_.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
-        const double omega = 2.0 * M_PI * filter_frequency_hz(params, i * dt_s, stages.drift);
+        const double omega = 2.0 * M_PI * filter_frequency_hz(params, i * dt_s, stages.drift, ceiling);
         // h(t - tau) = omega / sqrt(1 - zeta^2) exp(-zeta omega (t - tau)) sin(omega sqrt(1 - zeta^2) (t - tau))
         amplitude_[i] = omega / root;
         const double decay = std::exp(-zeta * omega * dt_s);

@@ -34,7 +34,7 @@ void check(const ModelParameters& p) {
 
 double Modulation::operator()(double t_s) const {
     if (t_s <= 0.0) return 0.0;  // the first sample is zero whatever alpha2 (docs/synthetic.md)
-    return std::exp(std::log(alpha1) + (alpha2 - 1.0) * std::log(t_s) - alpha3 * t_s);
+    return std::exp(log_alpha1 + (alpha2 - 1.0) * std::log(t_s) - alpha3 * t_s);
 }
 
 double Modulation::arias_fraction(double t_s) const { return detail::gamma_p(2.0 * alpha2 - 1.0, 2.0 * alpha3 * t_s); }
@@ -64,7 +64,11 @@ Modulation modulation(const ModelParameters& p) {
     m.alpha3 = detail::gamma_p_inverse(k, 0.45) / (2.0 * p.tmid_s);
     // I_a = pi / (2 g) alpha1^2 Gamma(k) / (2 alpha3)^k
     const double g = standard_gravity;
-    m.alpha1 = std::exp(0.5 * (std::log(2.0 * g * p.arias_m_s / M_PI) + k * std::log(2.0 * m.alpha3) - std::lgamma(k)));
+    const double log_alpha1 = 0.5 * (std::log(2.0 * g * p.arias_m_s / M_PI) + k * std::log(2.0 * m.alpha3) - std::lgamma(k));
+    // Where alpha1 is a normal double, the log of its rounded value: the motions stay bitwise
+    // those of the versions that stored alpha1 itself (and files made by them resume).
+    const double alpha1 = std::exp(log_alpha1);
+    m.log_alpha1 = std::isnormal(alpha1) ? std::log(alpha1) : log_alpha1;
     return m;
 }
 

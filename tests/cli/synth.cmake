@@ -16,7 +16,7 @@ bad_synth(synth_zeta_one "--zeta = 1 is invalid: out of range; allowed: a number
           --arias 0.5 --d595 10 --tmid 7 --f-mid 4 --f-slope -0.1 --zeta 1)
 bad_synth(synth_duration_ratio "--d595 = 900 is invalid: D5-95 / t_mid = 128.6 must lie in \\(0.0329, 84.7\\) for a gamma envelope"
           --arias 0.5 --d595 900 --tmid 7 --f-mid 4 --f-slope -0.1 --zeta 0.3)
-bad_synth(synth_filter_past_sampling "--dt = 0.06 is invalid: the filter's highest frequency, 4.7 Hz, must stay below a quarter of the sampling rate: dt < 0.05319 s"
+bad_synth(synth_filter_past_sampling "--dt = 0.06 is invalid: the filter's highest frequency where the envelope carries the motion \\(0.9938 to 24.79 s\\), 4.601 Hz, must stay below a quarter of the sampling rate: dt < 0.05434 s"
           ${MODEL} --dt 0.06)
 # A record fitted in the wrong unit (El Centro is in g): refused as simulate and suite refuse it.
 set(ELCENTRO_CM ${PROJECT_SOURCE_DIR}/tests/data/elcentro_1940_NS.dat --record-units cm/s^2)

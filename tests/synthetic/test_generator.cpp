@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "../motion/read_linear.hpp"
+#include "rocksweep/core/errors.hpp"
 #include "rocksweep/synthetic/generator.hpp"
 #include "rocksweep/synthetic/motion_measures.hpp"
 
@@ -164,4 +165,31 @@ TEST(Generator, ResidualVelocityAndDisplacementVanish) {
         else
             EXPECT_GT(worst, 0.1);
     }
+}
+
+// A record's quiet lead-in, fitted: a narrow envelope late in the motion (t_mid = 65 s, D5-95 =
+// 6 s) whose line, run back to t = 0, passes the sampling limit (26.7 Hz at 0 against 12.5 Hz
+// at dt = 0.02 s). Its alpha1 (~e^-2000) is no double: the motions were all zero, and the line
+// was refused. Now each motion has the target's Arias intensity on average, and a line past the
+// limit while the envelope carries the motion is still refused.
+TEST(Generator, ANarrowLateEnvelopeMakesMotionsAndItsLeadInHoldsTheLine) {
+    const ModelParameters p{.arias_m_s = 2.0, .d595_s = 6.0, .tmid_s = 65.0, .f_mid_hz = 4.4, .f_slope_hz_s = -0.35,
+                            .zeta_f = 0.2};
+    const double step = 0.02;
+    const Generator gen(p, step, default_duration_s(p));
+    std::vector<double> a;
+    std::vector<double> arias, tmid;
+    for (int i = 0; i < 200; ++i) {
+        gen.generate(7, i, a);
+        const AriasTimes m = arias_times(a, step);
+        arias.push_back(m.arias_m_s);
+        tmid.push_back(m.t45_s);
+    }
+    const Sample ia = summary(arias), t = summary(tmid);
+    // The high-pass takes 3 zeta_f f_c / f_mid = 2.7 % of I_a (HighPassTakesItsPredictedShare...).
+    EXPECT_NEAR(ia.mean, p.arias_m_s * (1.0 - 3.0 * p.zeta_f * p.fc_hz / p.f_mid_hz), 4.0 * ia.se);
+    EXPECT_NEAR(t.mean, p.tmid_s, 4.0 * t.se + 0.05);
+    ModelParameters steep = p;
+    steep.f_slope_hz_s = -3.0;  // 4.4 + 3 * 3.4 = 14.6 Hz at the window's start: past 12.5 Hz
+    EXPECT_THROW(Generator(steep, step, default_duration_s(steep)), InputError);
 }

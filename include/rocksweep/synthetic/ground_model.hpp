@@ -23,6 +23,12 @@ struct ModelParameters {
 /// papers' fitted lines stay positive over the strong phase, a long tail need not (our choice).
 inline constexpr double filter_frequency_floor_hz = 0.1;
 
+/// The filter's line must stay below the sampling limit (a quarter of the sampling rate) where
+/// the envelope carries the motion, from this fraction of I_a to 1 minus it; before and after,
+/// it is held just below the limit (our choice: a record's quiet lead-in, where the line
+/// extrapolated back would pass the limit, must not bend the line fitted to its strong phase).
+inline constexpr double filter_window_fraction = 1e-4;
+
 /// Throws InputError naming the parameter (field names as the `synth` command's options:
 /// "arias", "d595", "tmid", "f-mid", "f-slope", "zeta", "fc") for a value outside its range.
 void check(const ModelParameters& p);
@@ -31,7 +37,9 @@ void check(const ModelParameters& p);
 /// density in shape, so that its cumulative Arias intensity is a regularised incomplete gamma
 /// function P(2 alpha2 - 1, 2 alpha3 t) times I_a.
 struct Modulation {
-    double alpha1 = 0.0;  ///< [m/s^(alpha2 + 1)]
+    /// ln alpha1 (alpha1 in m/s^(alpha2 + 1)): a narrow envelope late in its record (t_mid = 65 s,
+    /// D5-95 = 6 s) has alpha1 ~ e^-2000, far below the smallest double
+    double log_alpha1 = 0.0;
     double alpha2 = 0.0;  ///< > 1/2
     double alpha3 = 0.0;  ///< [1/s]
     double operator()(double t_s) const;
