@@ -63,6 +63,12 @@ FitResult fit_model(const std::vector<double>& a_g, double dt_s, const FitSettin
     p.d595_s = m.d595_s();
     p.tmid_s = m.t45_s;
     p.fc_hz = settings.fc_hz;
+    try {  // the record's landmarks, not an option the user gave, are what no envelope fits
+        (void)modulation(p);
+    } catch (const InputError& e) {
+        throw InputError("record", "D5-95 = " + format_short(p.d595_s, 4) + " s after t_mid = " + format_short(p.tmid_s, 4) + " s",
+                         "a record the model can fit: " + e.allowed());
+    }
     fit_frequency(upcrossing_times(a_g, dt_s), m, p);
     // The filter may not run past a quarter of the record's sampling rate (Generator).
     p.f_mid_hz = std::min(p.f_mid_hz, 0.2 / dt_s);

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "rocksweep/core/errors.hpp"
 #include "rocksweep/records/record.hpp"
 #include "rocksweep/synthetic/fit.hpp"
 #include "rocksweep/synthetic/generator.hpp"
@@ -72,4 +73,22 @@ TEST(Fit, AQuietLeadInShiftsTheFitAndBendsNothing) {
     // The damping's bisection counts other noise (the envelope sits elsewhere): its own scatter.
     EXPECT_NEAR(late.params.zeta_f, plain.params.zeta_f, 0.05);
     EXPECT_NEAR(late.simulated_extrema, static_cast<double>(late.record_extrema), 0.05 * late.record_extrema + 1.0);
+}
+
+// A record no gamma envelope fits (its strong motion at once, then a long weak tail: D5-95 /
+// t_mid far above 85) is refused naming --record and its landmarks, not the --d595 option the
+// user never gave.
+TEST(Fit, ARecordNoEnvelopeFitsIsRefusedAsTheRecord) {
+    const double dt = 0.02;
+    std::vector<double> a;
+    for (int i = 0; i < 25; ++i) a.push_back(0.3 * std::sin(2.0 * M_PI * 4.0 * i * dt));
+    for (int i = 0; i < 60000; ++i) a.push_back(0.002 * std::sin(2.0 * M_PI * 2.0 * i * dt));
+    try {
+        fit_model(a, dt);
+        FAIL() << "fitted";
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.field(), "record");
+        EXPECT_NE(e.value().find("after t_mid"), std::string::npos) << e.value();
+        EXPECT_NE(e.allowed().find("for a gamma envelope"), std::string::npos) << e.allowed();
+    }
 }
