@@ -21,6 +21,13 @@ double filter_frequency_hz(const ModelParameters& p, double t_s, bool drift, dou
     return std::clamp(filter_line_hz(p, t_s, drift), filter_frequency_floor_hz, ceiling_hz);
 }
 
+// z <- z r: the impulse response one sample further (complex, the response its imaginary part).
+inline void advance(double& zr, double& zi, double rr, double ri) {
+    const double nr = zr * rr - zi * ri;
+    zi = zr * ri + zi * rr;
+    zr = nr;
+}
+
 // `p` once it and the sampling are checked: before any member is made of them.
 const ModelParameters& checked(const ModelParameters& p, double dt_s, double duration_s) {
     check(p);
@@ -75,6 +82,38 @@ Generator::Generator(const ModelParameters& params, double dt_s, double duration
         const double sigma = std::sqrt(stages.normalise ? variance[k] : variance[k_mid]);
         envelope_[k] = q(k * dt_s) / sigma / standard_gravity;
     }
+    // The high-pass takes the filter's low-frequency plateau, a share of I_a that grows with
+    // zeta_f f_c / f_mid; one gain for the whole motion gives it back, so that the motions' mean
+    // I_a = pi / (2 g) sum a_k^2 dt (the fit's measure) is the parameter exactly, and keeps their
+    // residual velocity and displacement the oscillator's (a gain per sample would not).
+    if (stages.high_pass && stages.keep_arias) {
+        const double target = params.arias_m_s * 2.0 / (M_PI * standard_gravity * dt_s);  // sum of a_k^2 [g^2]
+        const double gain = std::sqrt(target / expected_energy_after_high_pass());
+        for (double& e : envelope_) e *= gain;
+    }
+}
+
+double Generator::expected_energy_after_high_pass() const {
+    // Motion k is sum over i of G_ki u_i with u_i independent standard normals, G = HP diag(envelope) H:
+    // E[sum_k a_k^2] = sum_i sum_k G_ki^2, column i being impulse i's response through both.
+    // After the impulse's response ends the oscillator rings down as (1 + w t) e^(-w t), below
+    // 1e-9 of itself by w t = 25.
+    const std::size_t n = envelope_.size();
+    const auto ring = static_cast<std::size_t>(std::ceil(25.0 / (2.0 * M_PI * params_.fc_hz * dt_s_)));
+    std::vector<double> column;
+    double total = 0.0;
+    for (std::size_t i = 0; i + 1 < n; ++i) {
+        const std::size_t m = std::min<std::size_t>(n - i, length_[i] + 1 + ring);
+        column.assign(m, 0.0);  // column[0]: the impulse's own sample, where its response is 0
+        double zr = amplitude_[i], zi = 0.0;
+        for (std::size_t j = 1; j <= length_[i] && j < m; ++j) {
+            advance(zr, zi, rotation_re_[i], rotation_im_[i]);
+            column[j] = envelope_[i + j] * zi;
+        }
+        high_pass_.apply(column);
+        for (const double c : column) total += c * c;
+    }
+    return total;
 }
 
 void Generator::generate(std::uint64_t seed, std::uint64_t index, std::vector<double>& ax_g) const {
@@ -87,17 +126,6 @@ void Generator::generate(std::uint64_t seed, std::uint64_t index, std::vector<do
     for (std::size_t k = 0; k < n; ++k) ax_g[k] *= envelope_[k];
     if (stages_.high_pass) high_pass_.apply(ax_g);
 }
-
-namespace {
-
-// z <- z r: the impulse response one sample further (complex, the response its imaginary part).
-inline void advance(double& zr, double& zi, double rr, double ri) {
-    const double nr = zr * rr - zi * ri;
-    zi = zr * ri + zi * rr;
-    zr = nr;
-}
-
-}  // namespace
 
 template <bool Square>
 void Generator::superpose(const std::vector<double>& weights, std::vector<double>& out) const {

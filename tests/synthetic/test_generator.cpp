@@ -107,14 +107,21 @@ TEST(Generator, EnsembleReproducesAriasDurationAndMidTime) {
     expect_landmarks(measure(1000, Stages{.high_pass = false}), p, p.arias_m_s);
 }
 
-// The high-pass stage takes the filter's low-frequency plateau: I_a loses 3 zeta_f f_c / f of
-// itself (docs/synthetic.md; 3.6 % here), the landmarks stay.
+// The high-pass stage takes the filter's low-frequency plateau: without the gain that gives it
+// back, I_a loses 3 zeta_f f_c / f of itself (docs/synthetic.md; 3.6 % here), the landmarks stay.
 TEST(Generator, HighPassTakesItsPredictedShareOfTheAriasIntensity) {
     const ModelParameters p = example();
-    const Ensemble& e = full();
+    const Ensemble e = measure(1000, Stages{.keep_arias = false});
     const double loss = 3.0 * p.zeta_f * p.fc_hz / p.f_mid_hz;
     expect_landmarks(e, p, p.arias_m_s * (1.0 - loss));
     EXPECT_FALSE(matches(e.arias, p.arias_m_s, 0.005)) << e.arias.mean << " +- " << e.arias.se;
+}
+
+// The motions as written (every stage): over 1000 of them, I_a, D5-95 and t_mid are their
+// targets within four standard errors and 0.5 %.
+TEST(Generator, MotionsAsWrittenHaveTheTargetAriasDurationAndMidTime) {
+    const ModelParameters p = example();
+    expect_landmarks(full(), p, p.arias_m_s);
 }
 
 // The up-crossing rate of the filter's stationary output is its frequency (omega_f / 2 pi); the
@@ -139,12 +146,15 @@ TEST(Generator, WithoutTheDriftTheLateRateIsWrong) {
 
 // Without the normalisation at each t (one constant instead), the variance follows the filter's
 // sigma_f^2 ~ omega_f^3 / zeta_f: the early, higher-frequency shaking is amplified, and t_mid
-// and I_a move far outside their bands.
+// and I_a move far outside their bands. (The gain that gives back the high-pass's share would
+// bring I_a back, not t_mid: it is off here, as in HighPassTakesItsPredictedShare...)
 TEST(Generator, WithoutTheNormalisationTheLandmarksAreWrong) {
     const ModelParameters p = example();
-    const Ensemble e = measure(200, Stages{.normalise = false});
+    const Ensemble e = measure(200, Stages{.normalise = false, .keep_arias = false});
     EXPECT_FALSE(matches(e.tmid, p.tmid_s, 0.01)) << e.tmid.mean << " +- " << e.tmid.se;
     EXPECT_FALSE(matches(e.arias, p.arias_m_s, 0.01)) << e.arias.mean << " +- " << e.arias.se;
+    const Ensemble gained = measure(200, Stages{.normalise = false});
+    EXPECT_FALSE(matches(gained.tmid, p.tmid_s, 0.01)) << gained.tmid.mean << " +- " << gained.tmid.se;
 }
 
 // The high-pass oscillator brings the motion to rest: over 200 motions the velocity and the
@@ -186,8 +196,7 @@ TEST(Generator, ANarrowLateEnvelopeMakesMotionsAndItsLeadInHoldsTheLine) {
         tmid.push_back(m.t45_s);
     }
     const Sample ia = summary(arias), t = summary(tmid);
-    // The high-pass takes 3 zeta_f f_c / f_mid = 2.7 % of I_a (HighPassTakesItsPredictedShare...).
-    EXPECT_NEAR(ia.mean, p.arias_m_s * (1.0 - 3.0 * p.zeta_f * p.fc_hz / p.f_mid_hz), 4.0 * ia.se);
+    EXPECT_NEAR(ia.mean, p.arias_m_s, 4.0 * ia.se);
     EXPECT_NEAR(t.mean, p.tmid_s, 4.0 * t.se + 0.05);
     ModelParameters steep = p;
     steep.f_slope_hz_s = -3.0;  // 4.4 + 3 * 3.4 = 14.6 Hz at the window's start: past 12.5 Hz

@@ -18,6 +18,9 @@ struct Stages {
     bool drift = true;      ///< off: the filter keeps f_mid throughout (no omega')
     bool normalise = true;  ///< off: divided by the filter's standard deviation at t_mid, not at each t
     bool high_pass = true;  ///< off: no high-pass oscillator (residual velocity and displacement remain)
+    /// off: the high-pass keeps the share of I_a it takes (RDK10 as published: 3 zeta_f f_c / f_mid
+    /// of it, 42 % for Kocaeli's fit); on: the motion is scaled to give it back (docs/synthetic.md)
+    bool keep_arias = true;
 };
 
 /// A filter impulse's response h(t - tau) is followed until exp(-zeta omega (t - tau)) falls
@@ -48,6 +51,9 @@ private:
     /// out_k += sum over i < k of weights_i h_i(t_k - t_i) (or its square, for the variance).
     template <bool Square>
     void superpose(const std::vector<double>& weights, std::vector<double>& out) const;
+    /// E[sum over k of a_k^2] of the motions after the high-pass (a_k in g), exactly: each
+    /// impulse's response, enveloped, through the oscillator, squared and summed.
+    double expected_energy_after_high_pass() const;
 
     ModelParameters params_;
     double dt_s_;
