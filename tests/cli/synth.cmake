@@ -106,7 +106,7 @@ bad_input(suite_synthetic_only_alone "--synthetic-only = \\(given\\) is invalid:
           suite --config ${CFG} --suite ${SITE} --synthetic-only -o ${OUT})
 bad_input(suite_per_record_negative "--synthetic-per-record = -1 is invalid: out of range; allowed: an integer in \\[0, 100000000\\]"
           suite --config ${CFG} --suite ${SITE} --synthetic-per-record -1 -o ${OUT})
-bad_input(suite_per_record_dt "--dt = 0.05 is invalid: the filter's highest frequency, 5.603 Hz, must stay below a quarter of the sampling rate: dt < 0.04462 s \\(the model fitted to record sylmar_1994, .*records_suite.csv line 6\\)"
+bad_input(suite_per_record_dt "--dt = 0.05 is invalid: the filter's highest frequency where the envelope carries the motion \\(0.7302 to 13.29 s\\), 5.293 Hz, must stay below a quarter of the sampling rate: dt < 0.04723 s \\(the model fitted to record sylmar_1994, .*records_suite.csv line 6\\)"
           suite --config ${CFG} --suite ${SITE} --synthetic-per-record 2 --dt 0.05 -o ${OUT})
 set(PER_RECORD bash ${CMAKE_CURRENT_SOURCE_DIR}/suite_per_record.sh)
 add_test(NAME cli.bad_input.suite_per_record_records_refused
