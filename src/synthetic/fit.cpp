@@ -64,19 +64,20 @@ FitResult fit_model(const std::vector<double>& a_g, double dt_s, const FitSettin
     p.d595_s = m.d595_s();
     p.tmid_s = m.t45_s;
     p.fc_hz = settings.fc_hz;
-    try {  // the record's landmarks, not an option the user gave, are what no envelope fits
-        (void)modulation(p);
-    } catch (const InputError& e) {
-        throw InputError("record", "D5-95 = " + format_short(p.d595_s, 4) + " s after t_mid = " + format_short(p.tmid_s, 4) + " s",
-                         "a record the model can fit: " + e.allowed());
-    }
+    const Modulation q = [&] {
+        try {
+            return modulation(p);
+        } catch (const InputError& e) {  // the record's landmarks, not an option the user gave, fit no envelope
+            throw InputError("record", "D5-95 = " + format_short(p.d595_s, 4) + " s after t_mid = " + format_short(p.tmid_s, 4) + " s",
+                             "a record the model can fit: " + e.allowed());
+        }
+    }();
     fit_frequency(upcrossing_times(a_g, dt_s), m, p);
     // The filter may not run past a quarter of the record's sampling rate (Generator).
     p.f_mid_hz = std::min(p.f_mid_hz, 0.2 / dt_s);
     fit.record_extrema = count_positive_minima_negative_maxima(a_g, dt_s, m.t05_s, m.t95_s);
     // The drift must not carry the filter above the sampling limit while the motion lasts either
     // (the envelope's window, filter_window_fraction; not the record's quiet lead-in or tail).
-    const Modulation q = modulation(p);
     const double t_from = q.arias_time(filter_window_fraction), t_to = q.arias_time(1.0 - filter_window_fraction);
     const double f_end = p.f_mid_hz + p.f_slope_hz_s * (t_to - p.tmid_s);
     const double f_start = p.f_mid_hz - p.f_slope_hz_s * (p.tmid_s - t_from);
