@@ -32,7 +32,7 @@ inline void advance(double& zr, double& zi, double rr, double ri) {
 const ModelParameters& checked(const ModelParameters& p, double dt_s, double duration_s) {
     check(p);
     require_closed("dt", dt_s, record_dt_min_s, 0.1, "a sampling interval in [1e-5, 0.1] s");
-    require_closed("duration", duration_s, p.tmid_s, 1e5,
+    require_closed("motion-duration", duration_s, p.tmid_s, 1e5,
                    "a motion length in [t_mid, 1e5] s (t_mid = " + format_short(p.tmid_s, 4) + " s)");
     return p;
 }

@@ -12,6 +12,9 @@ bad_synth(synth_missing_one "--zeta = \\(not given\\) is invalid: required witho
           --arias 0.5 --d595 10 --tmid 7 --f-mid 4 --f-slope -0.1)
 bad_synth(synth_record_and_model "--record = .*elcentro_1940_NS.dat is invalid: either a record to fit or the model's parameters \\(--arias, --zeta given too\\)"
           --record ${PROJECT_SOURCE_DIR}/tests/data/elcentro_1940_NS.dat --record-units g --arias 0.5 --zeta 0.3)
+# The option as the user wrote it: --motion-duration, not the pulse's --duration.
+bad_synth(synth_motion_shorter_than_tmid "--motion-duration = 5 is invalid: a motion length in \\[t_mid, 1e5\\] s \\(t_mid = 7 s\\)"
+          ${MODEL} --motion-duration 5)
 bad_synth(synth_zeta_one "--zeta = 1 is invalid: out of range; allowed: a number in \\[0.01, 0.99\\]"
           --arias 0.5 --d595 10 --tmid 7 --f-mid 4 --f-slope -0.1 --zeta 1)
 bad_synth(synth_duration_ratio "--d595 = 900 is invalid: D5-95 / t_mid = 128.6 must lie in \\(0.0329, 84.7\\) for a gamma envelope"

@@ -31,7 +31,7 @@ class Generator {
 public:
     /// Motions of `params` (checked) sampled at `dt_s` over [0, duration_s]. Throws InputError
     /// ("dt") when the filter's highest frequency is not below a quarter of the sampling rate,
-    /// and ("duration") when the motion would end before t_mid.
+    /// and ("motion-duration", the option's name) when the motion would end before t_mid.
     Generator(const ModelParameters& params, double dt_s, double duration_s, Stages stages = {});
 
     const ModelParameters& parameters() const { return params_; }
