@@ -127,7 +127,14 @@ int main(int argc, char** argv) {
     double t0 = cpu_now();
     const synthetic::FitResult fit = synthetic::fit_model(r.ax_g, r.dt_s);
     std::printf("fit %s: %.3f s; %s\n", path.c_str(), cpu_now() - t0, synthetic::describe(fit.params).c_str());
+    t0 = cpu_now();
     const synthetic::Generator gen(fit.params, r.dt_s, synthetic::default_duration_s(fit.params));
+    const double setup_s = cpu_now() - t0;
+    t0 = cpu_now();
+    const synthetic::Generator without_gain(fit.params, r.dt_s, synthetic::default_duration_s(fit.params),
+                                            synthetic::Stages{.keep_arias = false});
+    std::printf("set up the model: %.1f ms, of which the high-pass gain %.1f ms (dt %.4g s)\n", 1e3 * setup_s,
+                1e3 * (setup_s - (cpu_now() - t0)), r.dt_s);
     if (startup_count > 0) {
         startup(gen, startup_count, floor_text);
         return 0;

@@ -95,22 +95,21 @@ Generator::Generator(const ModelParameters& params, double dt_s, double duration
 
 double Generator::expected_energy_after_high_pass() const {
     // Motion k is sum over i of G_ki u_i with u_i independent standard normals, G = HP diag(envelope) H:
-    // E[sum_k a_k^2] = sum_i sum_k G_ki^2, column i being impulse i's response through both.
-    // After the impulse's response ends the oscillator rings down as (1 + w t) e^(-w t), below
-    // 1e-9 of itself by w t = 25.
+    // E[sum_k a_k^2] = sum_i sum_k G_ki^2, column i being impulse i's response through both:
+    // followed while the filter's response lasts, then the oscillator's ring-down to the
+    // motion's end in closed form.
     const std::size_t n = envelope_.size();
-    const auto ring = static_cast<std::size_t>(std::ceil(25.0 / (2.0 * M_PI * params_.fc_hz * dt_s_)));
     std::vector<double> column;
     double total = 0.0;
     for (std::size_t i = 0; i + 1 < n; ++i) {
-        const std::size_t m = std::min<std::size_t>(n - i, length_[i] + 1 + ring);
+        const std::size_t m = std::min<std::size_t>(n - i, length_[i] + 1);
         column.assign(m, 0.0);  // column[0]: the impulse's own sample, where its response is 0
         double zr = amplitude_[i], zi = 0.0;
-        for (std::size_t j = 1; j <= length_[i] && j < m; ++j) {
+        for (std::size_t j = 1; j < m; ++j) {
             advance(zr, zi, rotation_re_[i], rotation_im_[i]);
             column[j] = envelope_[i + j] * zi;
         }
-        high_pass_.apply(column);
+        total += high_pass_.apply_and_ring_down(column, n - i - m);
         for (const double c : column) total += c * c;
     }
     return total;

@@ -61,3 +61,28 @@ TEST(HighPass, RefusesACornerOrStepThatIsNotPositive) {
     EXPECT_THROW(HighPass(fc, 0.0), std::invalid_argument);
     EXPECT_THROW(HighPass(fc, NAN), std::invalid_argument);
 }
+
+// The ring-down's energy in closed form: the burst cut after its second (the input held at 0
+// from there) against the same burst followed explicitly through its 60 s of rest (w t = 75,
+// far past the ring-down): the same sum of squares to 1e-12, and the same samples before the cut.
+TEST(HighPass, RingDownEnergyIsTheExplicitSum) {
+    const HighPass hp(fc, dt);
+    std::vector<double> whole = burst();
+    std::vector<double> cut(whole.begin(), whole.begin() + 51);
+    hp.apply(whole);
+    const double tail = hp.apply_and_ring_down(cut);
+    double explicit_tail = 0.0;
+    for (std::size_t k = 51; k < whole.size(); ++k) explicit_tail += whole[k] * whole[k];
+    EXPECT_NEAR(tail, explicit_tail, 1e-12 * explicit_tail);
+    EXPECT_GT(tail, 0.0);
+    for (std::size_t k = 0; k < cut.size(); ++k) EXPECT_EQ(cut[k], whole[k]) << k;
+    // Cut short after 20 and 300 samples of ring-down: the first samples of the explicit sum.
+    for (const std::size_t samples : {std::size_t{20}, std::size_t{300}}) {
+        const std::vector<double> input = burst();
+        std::vector<double> again(input.begin(), input.begin() + 51);
+        const double part = hp.apply_and_ring_down(again, samples);
+        double explicit_part = 0.0;
+        for (std::size_t k = 51; k < 51 + samples; ++k) explicit_part += whole[k] * whole[k];
+        EXPECT_NEAR(part, explicit_part, 1e-12 * explicit_tail) << samples;
+    }
+}
