@@ -23,11 +23,6 @@ namespace rocksweep {
 
 namespace {
 
-// Files up to this many bytes of results (and layout) get their skeleton built in memory and written by
-// plain write(), like a whole file, so that a full disk is an errno and never a failure inside
-// HDF5's own flush; larger skeletons are created on disk by HDF5 (their storage is a hole).
-constexpr std::size_t in_memory_skeleton_bytes = std::size_t{16} << 20;
-
 // Cells read per pread when scanning `done` (1 byte each): what a resume holds at once.
 constexpr std::size_t scan_block = std::size_t{1} << 24;
 
@@ -113,7 +108,7 @@ void ResultStream::create(const Skeleton& skeleton, const SweepResults* whole) {
     const std::string tmp = path_ + ".tmp";
     try {
         as_save(path_, [&] {
-            if (shape_.cell_count() * SweepResults::bytes_per_cell() + shape_.layout_bytes <= in_memory_skeleton_bytes) {
+            if (shape_.built_in_memory()) {  // else on disk, its storage a hole
                 h5::write_h5_image(tmp, path_, skeleton);
             } else {
                 h5::File f = h5::File::create(tmp);

@@ -19,11 +19,6 @@ namespace rocksweep {
 
 namespace {
 
-// The finished file is built in memory and written by write() (a full disk is then an errno,
-// never a failure inside HDF5) up to this many bytes of results and layout, as a streaming
-// skeleton is.
-constexpr std::size_t in_memory_file_bytes = std::size_t{16} << 20;
-
 // A record's share of a suite file beside its results: its /records group and attributes and
 // its measures, ~1 KB on disk (990 B a motion for 10^5 synthetic motions); the HDF5 library
 // holds several times that while it builds the file in memory.
@@ -155,7 +150,7 @@ std::vector<SuiteFragility> SuiteStream::write_finished(const std::vector<Damage
     // (and --resume writes this file again); one after it leaves this file.
     const std::string& path = cells_.path();
     h5::publish_atomically(path, [&](const std::string& tmp) {
-        if (spec_.cell_count() * SweepResults::bytes_per_cell() + cells_.shape().layout_bytes <= in_memory_file_bytes) {
+        if (cells_.shape().built_in_memory()) {  // as the running file's skeleton was
             h5::write_h5_image(tmp, path, write);
             return;
         }

@@ -78,7 +78,7 @@ FitResult fit_model(const std::vector<double>& a_g, double dt_s, const FitSettin
     fit.record_extrema = count_positive_minima_negative_maxima(a_g, dt_s, m.t05_s, m.t95_s);
     // The drift must not carry the filter above the sampling limit while the motion lasts either
     // (the envelope's window, filter_window_fraction; not the record's quiet lead-in or tail).
-    const double t_from = q.arias_time(filter_window_fraction), t_to = q.arias_time(1.0 - filter_window_fraction);
+    const auto [t_from, t_to] = q.carrying_window();
     const double f_end = p.f_mid_hz + p.f_slope_hz_s * (t_to - p.tmid_s);
     const double f_start = p.f_mid_hz - p.f_slope_hz_s * (p.tmid_s - t_from);
     const double f_cap = 0.24 / dt_s;

@@ -44,8 +44,8 @@ Generator::Generator(const ModelParameters& params, double dt_s, double duration
     const Modulation q = modulation(params);
     const std::size_t n = static_cast<std::size_t>(std::floor(duration_s / dt_s + 0.5)) + 1;
     // The line is straight: its highest value over the envelope's window is at one end of it.
-    const double t_from = std::min(q.arias_time(filter_window_fraction), (n - 1) * dt_s);
-    const double t_to = std::min(q.arias_time(1.0 - filter_window_fraction), (n - 1) * dt_s);
+    const Modulation::Window window = q.carrying_window();
+    const double t_from = std::min(window.from_s, (n - 1) * dt_s), t_to = std::min(window.to_s, (n - 1) * dt_s);
     const double f_top = std::max({filter_line_hz(params, t_from, stages.drift), filter_line_hz(params, t_to, stages.drift),
                                    filter_frequency_floor_hz});
     if (!(f_top * dt_s < 0.25))

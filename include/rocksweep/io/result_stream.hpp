@@ -43,6 +43,12 @@ public:
         /// and measures per record): with the results, it decides whether the file is built in memory.
         std::size_t layout_bytes = 0;
         std::size_t cell_count() const { return groups.size() * cells_per_group; }
+        /// Whether the file is built in memory and written by plain write(), like a whole file,
+        /// so that a full disk is an errno and never a failure inside HDF5's own flush: up to
+        /// 16 MB of results, uncompressed, and layout. Larger files are created on disk by HDF5.
+        bool built_in_memory() const {
+            return cell_count() * SweepResults::bytes_per_cell() + layout_bytes <= (std::size_t{16} << 20);
+        }
     };
     /// Cells [cell, cell + count) of group `group`, taken from entries [from, from + count) of
     /// the SweepResults written.

@@ -47,6 +47,13 @@ struct Modulation {
     double arias_fraction(double t_s) const;
     /// The time by which `fraction` (in (0, 1)) of I_a has arrived.
     double arias_time(double fraction) const;
+    /// Where the envelope carries the motion: from filter_window_fraction of I_a to 1 minus it [s].
+    struct Window {
+        double from_s = 0.0, to_s = 0.0;
+    };
+    Window carrying_window() const {
+        return {arias_time(filter_window_fraction), arias_time(1.0 - filter_window_fraction)};
+    }
 };
 
 /// alpha1..3 from (I_a, D5-95, t_mid): the shape k = 2 alpha2 - 1 from D5-95 / t_mid, which
